@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# GPU check, run on the device machine (see README "GPU tests"):
+#   builds the cuda preset (CPU + CUDA backends, sm_90) and runs every test with the
+#   ctest label "gpu". Test-only dependencies the device lacks (GoogleTest sources,
+#   GMP) come from .deps/, made here by scripts/fetch-deps.sh and carried with the run:
+#     device run: carry [".deps"], command "bash scripts/gpu-check.sh"
+# Extra arguments are passed to ctest (e.g. -R Predicates).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+echo "== device"; nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader || true
+echo "== tools"; cmake --version | head -1; nvcc --version | tail -1; c++ --version | head -1
+cmake -S . -B build/cuda -G Ninja -DGDEL_CUDA=ON -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CUDA_ARCHITECTURES="${GDEL_CUDA_ARCH:-90}" -DGDEL_DEPS_DIR="$PWD/.deps" >build-cuda-configure.log 2>&1 \
+  || { cat build-cuda-configure.log; exit 1; }
+cmake --build build/cuda -j "$jobs" 2>&1 | grep -vE '^\[[0-9]+/[0-9]+\] (Building|Linking)' || true
+test "${PIPESTATUS[0]}" -eq 0
+ctest --test-dir build/cuda -L gpu --output-on-failure -j 4 "$@"

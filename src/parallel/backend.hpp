@@ -1,0 +1,90 @@
+// Backend tags and the execution context of the parallel layer.
+//
+// Algorithm code is written once as templates over a backend tag B (Cpu or Cuda)
+// and per-element GDEL_HD functors. Host translation units (*.cpp, Thrust OpenMP
+// system) instantiate B = Cpu; CUDA translation units (*.cu) instantiate B = Cuda.
+// Synchronisation: every primitive is enqueued on the context's stream; only calls
+// documented as "synchronizes" (those returning a host value, to_host, ...) wait.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+
+#include "core/macros.hpp"
+
+#if defined(__CUDACC__)
+#include <cuda_runtime.h>
+#endif
+
+namespace gdel::par {
+
+struct Cpu {
+  static constexpr bool is_device = false;
+  static constexpr const char* name = "cpu";
+};
+struct Cuda {
+  static constexpr bool is_device = true;
+  static constexpr const char* name = "cuda";
+};
+
+// Bytes currently held and the peak, per context (buffers and temporaries).
+class MemoryStats {
+ public:
+  void add(std::size_t bytes) {
+    std::size_t now = current_.fetch_add(bytes, std::memory_order_relaxed) + bytes;
+    std::size_t p = peak_.load(std::memory_order_relaxed);
+    while (now > p && !peak_.compare_exchange_weak(p, now, std::memory_order_relaxed)) {
+    }
+  }
+  void sub(std::size_t bytes) { current_.fetch_sub(bytes, std::memory_order_relaxed); }
+  std::size_t current() const { return current_.load(std::memory_order_relaxed); }
+  std::size_t peak() const { return peak_.load(std::memory_order_relaxed); }
+  void reset_peak() { peak_.store(current(), std::memory_order_relaxed); }
+
+ private:
+  std::atomic<std::size_t> current_{0};
+  std::atomic<std::size_t> peak_{0};
+};
+
+template <class B>
+class Context;
+
+template <>
+class Context<Cpu> {
+ public:
+  Context() = default;
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+  MemoryStats& memory() { return mem_; }
+  void synchronize() {}
+
+ private:
+  MemoryStats mem_;
+};
+
+#if defined(__CUDACC__)
+// One device, one stream. Memory comes from the device's stream-ordered pool
+// (cudaMallocAsync), so temporaries are cheap and need no host synchronisation.
+template <>
+class Context<Cuda> {
+ public:
+  explicit Context(int device = 0);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+  MemoryStats& memory() { return mem_; }
+  cudaStream_t stream() const { return stream_; }
+  int device() const { return device_; }
+  int sm_count() const { return sm_count_; }
+  void synchronize();
+
+ private:
+  MemoryStats mem_;
+  cudaStream_t stream_ = nullptr;
+  int device_ = 0;
+  int sm_count_ = 1;
+};
+#endif
+
+}  // namespace gdel::par

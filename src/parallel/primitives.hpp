@@ -1,0 +1,266 @@
+// Device-wide primitives on both backends: parallel_for, scan, compaction, sort,
+// reduce, unique, gather. CPU: Thrust's OpenMP system / OpenMP loops. CUDA: CUB
+// device-wide algorithms with temporaries from the stream-ordered pool, and a
+// grid-stride kernel for parallel_for.
+//
+// Every call is enqueued on the context's stream. Calls that return a host value
+// (counts, reductions) synchronize; the others do not.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <thrust/copy.h>
+#include <thrust/iterator/counting_iterator.h>
+#include <thrust/reduce.h>
+#include <thrust/scan.h>
+#include <thrust/sort.h>
+#include <thrust/system/omp/execution_policy.h>
+#include <thrust/unique.h>
+
+#include "parallel/backend.hpp"
+#include "parallel/check.hpp"
+#include "parallel/memory.hpp"
+
+#if defined(__CUDACC__)
+#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_reduce.cuh>
+#include <cub/device/device_scan.cuh>
+#include <cub/device/device_select.cuh>
+#endif
+
+namespace gdel::par {
+
+// ---------------------------------------------------------------------------
+// CPU backend
+// ---------------------------------------------------------------------------
+
+// f(i) for i in [0, n), in parallel. f must be safe to run concurrently.
+template <class F>
+void parallel_for(Context<Cpu>&, std::int64_t n, F f) {
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) f(i);
+}
+
+template <class T>
+void exclusive_scan(Context<Cpu>&, const T* in, T* out, std::size_t n) {
+  thrust::exclusive_scan(thrust::omp::par, in, in + n, out, T(0));
+}
+template <class T>
+void inclusive_scan(Context<Cpu>&, const T* in, T* out, std::size_t n) {
+  thrust::inclusive_scan(thrust::omp::par, in, in + n, out);
+}
+// Synchronizes. Sum of all elements.
+template <class T>
+T reduce_sum(Context<Cpu>&, const T* in, std::size_t n) {
+  return thrust::reduce(thrust::omp::par, in, in + n, T(0));
+}
+template <class T>
+T reduce_max(Context<Cpu>&, const T* in, std::size_t n, T init) {
+  return thrust::reduce(thrust::omp::par, in, in + n, init, thrust::maximum<T>());
+}
+template <class T>
+T reduce_min(Context<Cpu>&, const T* in, std::size_t n, T init) {
+  return thrust::reduce(thrust::omp::par, in, in + n, init, thrust::minimum<T>());
+}
+// Stable compaction of values satisfying pred; returns the count (synchronizes).
+template <class T, class Pred>
+std::size_t copy_if(Context<Cpu>&, const T* in, T* out, std::size_t n, Pred pred) {
+  return static_cast<std::size_t>(thrust::copy_if(thrust::omp::par, in, in + n, out, pred) - out);
+}
+// Indices i in [0, n) with pred(i), ascending; returns the count (synchronizes).
+template <class I, class Pred>
+std::size_t select_indices(Context<Cpu>&, std::size_t n, I* out, Pred pred) {
+  thrust::counting_iterator<I> first(0);
+  return static_cast<std::size_t>(thrust::copy_if(thrust::omp::par, first, first + n, out, pred) - out);
+}
+// Stable sort of unsigned/signed integer keys; only bits [0, end_bit) may differ
+// (a hint for the radix sort; the CPU sort compares whole keys).
+template <class K>
+void sort_keys(Context<Cpu>&, K* keys, std::size_t n, int /*end_bit*/ = int(sizeof(K) * 8)) {
+  thrust::stable_sort(thrust::omp::par, keys, keys + n);
+}
+template <class K, class V>
+void sort_pairs(Context<Cpu>&, K* keys, V* values, std::size_t n, int /*end_bit*/ = int(sizeof(K) * 8)) {
+  thrust::stable_sort_by_key(thrust::omp::par, keys, keys + n, values);
+}
+// In-place removal of consecutive duplicates; returns the new count (synchronizes).
+template <class T>
+std::size_t unique(Context<Cpu>&, T* data, std::size_t n) {
+  return static_cast<std::size_t>(thrust::unique(thrust::omp::par, data, data + n) - data);
+}
+
+// ---------------------------------------------------------------------------
+// CUDA backend
+// ---------------------------------------------------------------------------
+#if defined(__CUDACC__)
+
+namespace detail {
+template <class F>
+__global__ void for_kernel(std::int64_t n, F f) {
+  const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
+  for (std::int64_t i = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += stride) f(i);
+}
+inline unsigned grid_for(const Context<Cuda>& c, std::int64_t n, int block) {
+  std::int64_t want = (n + block - 1) / block;
+  std::int64_t cap = std::int64_t(c.sm_count()) * 64;
+  return static_cast<unsigned>(want < cap ? want : cap);
+}
+// Runs a CUB call twice: size query, then with temporaries from the pool.
+template <class Call>
+void with_temp(Context<Cuda>& c, Call call) {
+  std::size_t bytes = 0;
+  GDEL_CUDA_CHECK(call(nullptr, bytes));
+  Buffer<unsigned char, Cuda> tmp(c, bytes);
+  GDEL_CUDA_CHECK(call(tmp.data(), bytes));
+}
+template <class T>
+struct IndexPred;
+}  // namespace detail
+
+template <class F>
+void parallel_for(Context<Cuda>& c, std::int64_t n, F f, int block = 256) {
+  if (n <= 0) return;
+  detail::for_kernel<<<detail::grid_for(c, n, block), block, 0, c.stream()>>>(n, f);
+  GDEL_CUDA_CHECK_LAUNCH("parallel_for");
+}
+
+template <class T>
+void exclusive_scan(Context<Cuda>& c, const T* in, T* out, std::size_t n) {
+  if (!n) return;
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceScan::ExclusiveSum(t, b, in, out, static_cast<std::int64_t>(n), c.stream());
+  });
+}
+template <class T>
+void inclusive_scan(Context<Cuda>& c, const T* in, T* out, std::size_t n) {
+  if (!n) return;
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceScan::InclusiveSum(t, b, in, out, static_cast<std::int64_t>(n), c.stream());
+  });
+}
+template <class T>
+T reduce_sum(Context<Cuda>& c, const T* in, std::size_t n) {
+  if (!n) return T(0);
+  Buffer<T, Cuda> r(c, 1);
+  T* rp = r.data();
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceReduce::Sum(t, b, in, rp, static_cast<std::int64_t>(n), c.stream());
+  });
+  return r.get(0);
+}
+template <class T>
+T reduce_max(Context<Cuda>& c, const T* in, std::size_t n, T init) {
+  if (!n) return init;
+  Buffer<T, Cuda> r(c, 1);
+  T* rp = r.data();
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceReduce::Reduce(t, b, in, rp, static_cast<std::int64_t>(n), cuda::maximum<T>(), init,
+                                     c.stream());
+  });
+  return r.get(0);
+}
+template <class T>
+T reduce_min(Context<Cuda>& c, const T* in, std::size_t n, T init) {
+  if (!n) return init;
+  Buffer<T, Cuda> r(c, 1);
+  T* rp = r.data();
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceReduce::Reduce(t, b, in, rp, static_cast<std::int64_t>(n), cuda::minimum<T>(), init,
+                                     c.stream());
+  });
+  return r.get(0);
+}
+template <class T, class Pred>
+std::size_t copy_if(Context<Cuda>& c, const T* in, T* out, std::size_t n, Pred pred) {
+  if (!n) return 0;
+  Buffer<std::int64_t, Cuda> cnt(c, 1);
+  std::int64_t* cp = cnt.data();
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceSelect::If(t, b, in, out, cp, static_cast<std::int64_t>(n), pred, c.stream());
+  });
+  return static_cast<std::size_t>(cnt.get(0));
+}
+template <class I, class Pred>
+std::size_t select_indices(Context<Cuda>& c, std::size_t n, I* out, Pred pred) {
+  if (!n) return 0;
+  Buffer<std::int64_t, Cuda> cnt(c, 1);
+  std::int64_t* cp = cnt.data();
+  thrust::counting_iterator<I> first(0);
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceSelect::If(t, b, first, out, cp, static_cast<std::int64_t>(n), pred, c.stream());
+  });
+  return static_cast<std::size_t>(cnt.get(0));
+}
+template <class K>
+void sort_keys(Context<Cuda>& c, K* keys, std::size_t n, int end_bit = int(sizeof(K) * 8)) {
+  if (n < 2) return;
+  Buffer<K, Cuda> alt(c, n);
+  cub::DoubleBuffer<K> db(keys, alt.data());
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceRadixSort::SortKeys(t, b, db, static_cast<std::int64_t>(n), 0, end_bit, c.stream());
+  });
+  if (db.Current() != keys) detail::Memory<Cuda>::copy(c, keys, db.Current(), n * sizeof(K));
+}
+template <class K, class V>
+void sort_pairs(Context<Cuda>& c, K* keys, V* values, std::size_t n, int end_bit = int(sizeof(K) * 8)) {
+  if (n < 2) return;
+  Buffer<K, Cuda> altk(c, n);
+  Buffer<V, Cuda> altv(c, n);
+  cub::DoubleBuffer<K> dk(keys, altk.data());
+  cub::DoubleBuffer<V> dv(values, altv.data());
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceRadixSort::SortPairs(t, b, dk, dv, static_cast<std::int64_t>(n), 0, end_bit, c.stream());
+  });
+  if (dk.Current() != keys) detail::Memory<Cuda>::copy(c, keys, dk.Current(), n * sizeof(K));
+  if (dv.Current() != values) detail::Memory<Cuda>::copy(c, values, dv.Current(), n * sizeof(V));
+}
+template <class T>
+std::size_t unique(Context<Cuda>& c, T* data, std::size_t n) {
+  if (n < 2) return n;
+  Buffer<T, Cuda> out(c, n);
+  Buffer<std::int64_t, Cuda> cnt(c, 1);
+  std::int64_t* cp = cnt.data();
+  T* op = out.data();
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceSelect::Unique(t, b, data, op, cp, static_cast<std::int64_t>(n), c.stream());
+  });
+  std::size_t m = static_cast<std::size_t>(cnt.get(0));
+  detail::Memory<Cuda>::copy(c, data, op, m * sizeof(T));
+  return m;
+}
+
+#endif  // __CUDACC__
+
+// ---------------------------------------------------------------------------
+// Backend-generic helpers built on the above
+// ---------------------------------------------------------------------------
+
+// out[i] = value for i in [0, n).
+template <class B, class T>
+void fill(Context<B>& c, T* out, std::size_t n, T value) {
+  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_HD(std::int64_t i) { out[i] = value; });
+}
+// out[i] = first + i.
+template <class B, class T>
+void sequence(Context<B>& c, T* out, std::size_t n, T first = T(0)) {
+  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_HD(std::int64_t i) { out[i] = first + T(i); });
+}
+// out[i] = in[map[i]].
+template <class B, class T, class I>
+void gather(Context<B>& c, const I* map, const T* in, T* out, std::size_t n) {
+  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_HD(std::int64_t i) { out[i] = in[map[i]]; });
+}
+// Exclusive scan in place of counts; returns the total (synchronizes). counts has
+// n + 1 elements; counts[n] receives the total.
+template <class B, class T>
+T counts_to_offsets(Context<B>& c, T* counts, std::size_t n) {
+  // counts[n] is scratch; set it to 0 so the scan over n + 1 gives the total there.
+  parallel_for(c, 1, [=] GDEL_HD(std::int64_t) { counts[n] = T(0); });
+  exclusive_scan(c, counts, counts, n + 1);
+  T total;
+  detail::Memory<B>::to_host(c, &total, counts + n, sizeof(T));
+  return total;
+}
+
+}  // namespace gdel::par

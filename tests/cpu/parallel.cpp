@@ -1,0 +1,10 @@
+#include "common/parallel_cases.hpp"
+
+TEST(ParallelCpu, Primitives) {
+  gdel::par::Context<gdel::par::Cpu> ctx;
+  gdel::test::parallel_layer_cases(ctx);
+}
+TEST(ParallelCpu, Buffers) {
+  gdel::par::Context<gdel::par::Cpu> ctx;
+  gdel::test::buffer_cases(ctx);
+}
