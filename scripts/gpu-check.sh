@@ -13,6 +13,8 @@ echo "== tools"; cmake --version | head -1; nvcc --version | tail -1; c++ --vers
 cmake -S . -B build/cuda -G Ninja -DGDEL_CUDA=ON -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CUDA_ARCHITECTURES="${GDEL_CUDA_ARCH:-90}" -DGDEL_DEPS_DIR="$PWD/.deps" >build-cuda-configure.log 2>&1 \
   || { cat build-cuda-configure.log; exit 1; }
-cmake --build build/cuda -j "$jobs" 2>&1 | grep -vE '^\[[0-9]+/[0-9]+\] (Building|Linking)' || true
-test "${PIPESTATUS[0]}" -eq 0
+if ! cmake --build build/cuda -j "$jobs" >build-cuda.log 2>&1; then
+  grep -E -B2 -A8 'error|FAILED' build-cuda.log | head -120
+  exit 1
+fi
 ctest --test-dir build/cuda -L gpu --output-on-failure -j 4 "$@"

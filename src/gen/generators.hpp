@@ -60,7 +60,7 @@ std::vector<double> uniform(std::size_t n, std::uint64_t seed);
 
 // Normal per coordinate, mean kGaussianMean, standard deviation kGaussianSigma, drawn by
 // Marsaglia's polar method with a deterministic logarithm (see generators.cpp). Points are
-// not clipped to the unit cube (about 1 in 3.5 million coordinates lies outside [0,1]).
+// not clipped to the unit cube (about 1 in 1.7 million coordinates lies outside [0,1]).
 std::vector<double> gaussian(std::size_t n, std::uint64_t seed);
 
 // Uniform in the open ball of radius kBallRadius centred at (kBallCentre)^3 (rejection
@@ -92,6 +92,13 @@ std::uint64_t sphere_radius(std::size_t n);
 
 // Number of distinct points the sphere construction yields for odd d (d >= 1).
 std::size_t sphere_point_count(std::uint64_t d);
+
+namespace detail {
+// Closed form of sphere_point_count(d) for odd d: 2 * prod over prime powers p^a || d of
+// p^a (p = 1 mod 4) or sigma(p^a) = 1 + p + ... + p^a (p = 3 mod 4). Observed, not proven
+// here: the tests compare it with the enumeration; sphere() uses it only to skip radii.
+std::uint64_t sphere_point_count_formula(std::uint64_t d);
+}  // namespace detail
 
 // ceil(n/2) points (t,0,0) followed by floor(n/2) points (0,t,1), each t a distinct multiple
 // of 2^-32 in [0,1) (exact in double), in random order within each line. The Delaunay

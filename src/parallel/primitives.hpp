@@ -9,6 +9,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 
 #include <thrust/copy.h>
 #include <thrust/iterator/counting_iterator.h>
@@ -74,20 +76,62 @@ std::size_t select_indices(Context<Cpu>&, std::size_t n, I* out, Pred pred) {
   thrust::counting_iterator<I> first(0);
   return static_cast<std::size_t>(thrust::copy_if(thrust::omp::par, first, first + n, out, pred) - out);
 }
-// Stable sort of unsigned/signed integer keys; only bits [0, end_bit) may differ
-// (a hint for the radix sort; the CPU sort compares whole keys).
+namespace detail {
+// Thrust 3.0's OpenMP stable sort mis-orders negative signed integer keys (its radix
+// path treats them as unsigned). Sort signed keys as unsigned with the sign bit
+// flipped, which preserves their order.
+template <class K>
+void flip_sign_bits(K* keys, std::size_t n) {
+  using U = std::make_unsigned_t<K>;
+  const U bit = U(1) << (sizeof(K) * 8 - 1);
+  U* u = reinterpret_cast<U*>(keys);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) u[i] ^= bit;
+}
+}  // namespace detail
+
+// Stable sort of integer keys; only bits [0, end_bit) may differ (a hint for the
+// radix sort; the CPU sort compares whole keys).
 template <class K>
 void sort_keys(Context<Cpu>&, K* keys, std::size_t n, int /*end_bit*/ = int(sizeof(K) * 8)) {
-  thrust::stable_sort(thrust::omp::par, keys, keys + n);
+  static_assert(std::is_integral_v<K>, "sort_keys sorts integer keys");
+  if constexpr (std::is_signed_v<K>) {
+    using U = std::make_unsigned_t<K>;
+    detail::flip_sign_bits(keys, n);
+    U* u = reinterpret_cast<U*>(keys);
+    thrust::stable_sort(thrust::omp::par, u, u + n);
+    detail::flip_sign_bits(keys, n);
+  } else {
+    thrust::stable_sort(thrust::omp::par, keys, keys + n);
+  }
 }
 template <class K, class V>
 void sort_pairs(Context<Cpu>&, K* keys, V* values, std::size_t n, int /*end_bit*/ = int(sizeof(K) * 8)) {
-  thrust::stable_sort_by_key(thrust::omp::par, keys, keys + n, values);
+  static_assert(std::is_integral_v<K>, "sort_pairs sorts integer keys");
+  if constexpr (std::is_signed_v<K>) {
+    using U = std::make_unsigned_t<K>;
+    detail::flip_sign_bits(keys, n);
+    U* u = reinterpret_cast<U*>(keys);
+    thrust::stable_sort_by_key(thrust::omp::par, u, u + n, values);
+    detail::flip_sign_bits(keys, n);
+  } else {
+    thrust::stable_sort_by_key(thrust::omp::par, keys, keys + n, values);
+  }
 }
 // In-place removal of consecutive duplicates; returns the new count (synchronizes).
+// (Thrust's in-place unique on the OpenMP system is not safe with several threads:
+// it loses or keeps extra elements. Compact from a copy instead.)
 template <class T>
-std::size_t unique(Context<Cpu>&, T* data, std::size_t n) {
-  return static_cast<std::size_t>(thrust::unique(thrust::omp::par, data, data + n) - data);
+std::size_t unique(Context<Cpu>& c, T* data, std::size_t n) {
+  if (n < 2) return n;
+  Buffer<T, Cpu> tmp(c, n);
+  std::memcpy(tmp.data(), data, n * sizeof(T));
+  const T* t = tmp.data();
+  thrust::counting_iterator<std::size_t> first(0);
+  return static_cast<std::size_t>(
+      thrust::copy_if(thrust::omp::par, t, t + n, first, data,
+                      [t](std::size_t i) { return i == 0 || !(t[i] == t[i - 1]); }) -
+      data);
 }
 
 // ---------------------------------------------------------------------------

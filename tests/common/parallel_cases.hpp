@@ -129,6 +129,27 @@ void parallel_layer_cases(par::Context<B>& ctx) {
   }
 }
 
+// unique() on many small sorted arrays with runs of every length (the CPU version
+// once relied on Thrust's in-place unique, which is racy on the OpenMP system).
+template <class B>
+void unique_cases(par::Context<B>& ctx) {
+  std::mt19937 r(1);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 1 + static_cast<int>(r() % 5000);
+    std::vector<int> v(static_cast<std::size_t>(n));
+    for (auto& x : v) x = static_cast<int>(r() % static_cast<unsigned>(n / 2 + 1)) - 1;
+    par::Buffer<int, B> b(ctx);
+    b.assign(v);
+    par::sort_keys(ctx, b.data(), v.size());
+    const std::size_t u = par::unique(ctx, b.data(), v.size());
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    auto h = b.to_host();
+    h.resize(u);
+    ASSERT_EQ(h, v) << "trial " << trial << " n " << n;
+  }
+}
+
 template <class B>
 void buffer_cases(par::Context<B>& ctx) {
   using namespace gdel::par;

@@ -8,3 +8,7 @@ TEST(ParallelCpu, Buffers) {
   gdel::par::Context<gdel::par::Cpu> ctx;
   gdel::test::buffer_cases(ctx);
 }
+TEST(ParallelCpu, UniqueManyRuns) {
+  gdel::par::Context<gdel::par::Cpu> ctx;
+  gdel::test::unique_cases(ctx);
+}

@@ -17,3 +17,7 @@ TEST(ParallelGpu, OutOfMemoryIsReportedAndRecoverable) {
   ok.memset(0);
   EXPECT_EQ(ok.get(999), 0);
 }
+TEST(ParallelGpu, UniqueManyRuns) {
+  gdel::par::Context<gdel::par::Cuda> ctx;
+  gdel::test::unique_cases(ctx);
+}

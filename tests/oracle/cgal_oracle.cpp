@@ -136,9 +136,11 @@ RegularResult regular_result(const Tr& tr, std::size_t n) {
   return r;
 }
 
+#ifndef CGAL_LINKED_WITH_TBB
 [[noreturn]] void no_tbb() {
   throw std::runtime_error("gdel::oracle: parallel CGAL triangulation requested, but the oracle was built without TBB");
 }
+#endif
 
 }  // namespace
 

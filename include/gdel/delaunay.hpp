@@ -1,0 +1,80 @@
+// Delaunay triangulation of 3-D points: the public C++ API.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gdel/options.hpp"
+
+namespace gdel {
+
+enum class Algorithm {
+  Auto,     // the best available algorithm (today: gflip3d; see README status)
+  gflip3d,  // parallel insertion + flipping: a near-Delaunay triangulation (failed vertices reported)
+  gdel3d,   // gflip3d + star-splaying repair: the exact Delaunay triangulation (not yet available)
+};
+const char* to_string(Algorithm a);
+
+// Which uninserted point a tet inserts in a round of gFlip3D.
+enum class InsertionRule {
+  Circumcenter,  // nearest to the circumcentre (largest insphere determinant), default
+  Centroid,      // nearest to the centroid
+  Random,        // a hash of the point index
+};
+
+struct Options {
+  Algorithm algorithm = Algorithm::Auto;
+  Backend backend = Backend::Auto;
+  int device = 0;  // CUDA device ordinal
+  InsertionRule insertion = InsertionRule::Circumcenter;
+  // gFlip3D's terminal variant ("InsAll"): insert every point by splitting, flip once
+  // at the end. For comparison only: it leaves many more non-Delaunay facets.
+  bool terminal_flipping = false;
+  // Sort output tets (each rotated to start at its smallest vertex, list sorted) so
+  // that the arrays are bitwise identical across runs and backends.
+  bool canonical_order = false;
+  // Run the exact verifier on the result and store its report summary in stats.
+  bool verify = false;
+};
+
+struct Stats {
+  std::string algorithm;
+  std::string backend;
+  double seconds = 0;                                 // total wall time
+  std::vector<std::pair<std::string, double>> stages;  // seconds per stage, in order
+  std::int64_t points = 0;          // input points
+  std::int64_t distinct_points = 0; // after removing exact duplicates
+  std::int64_t rounds = 0;          // insertion rounds
+  std::int64_t flip_iterations = 0; // parallel flipping iterations
+  std::int64_t flips23 = 0, flips32 = 0;
+  std::int64_t exact_evaluations = 0;  // items decided by the exact (non-filter) pass
+  std::int64_t failed_vertices = 0;    // vertices of facets left not locally Delaunay
+  std::int64_t peak_bytes = 0;         // peak backend memory (device memory for CUDA)
+  std::string verify_summary;          // with Options::verify
+  std::string to_string() const;
+};
+
+struct Triangulation {
+  // 4 input point ids per tet, positively oriented (orient3d > 0, see docs).
+  std::vector<std::int32_t> tets;
+  // 4 per tet: neighbours[4t+i] is the tet across the face opposite vertex i, -1 on the hull.
+  std::vector<std::int32_t> neighbors;
+  // Input ids of vertices incident to facets that are not locally Delaunay
+  // (gflip3d only; empty for exact algorithms), ascending.
+  std::vector<std::int32_t> failed_vertices;
+  // For each input point, the id of the point that represents it: itself, or the
+  // smallest index of an exactly equal point (duplicates appear once in tets).
+  std::vector<std::int32_t> representative;
+  Stats stats;
+  std::int64_t num_tets() const { return static_cast<std::int64_t>(tets.size() / 4); }
+};
+
+// points: 3n doubles (x0,y0,z0,x1,...). Throws InvalidInput (NaN/Inf, bad size,
+// coordinates outside the exact range), DegenerateInput (fewer than 4 distinct points,
+// all points coplanar), OutOfDeviceMemory, BackendUnavailable.
+Triangulation delaunay(std::span<const double> points, const Options& options = {});
+
+}  // namespace gdel

@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+"""Derive the simulation-of-simplicity term tables of gdel's predicates.
+
+Writes src/geometry/sos_tables.hpp (or checks it with --check).
+
+Model (Edelsbrunner & Muecke, "Simulation of simplicity", 1990).  A predicate is the
+sign of a homogeneous determinant
+
+    D = det [ q_0 1 ; q_1 1 ; ... ; q_n 1 ]          (n+1 rows, d coordinate columns + ones)
+
+where row r holds the d coordinates of the r-th point *after the points have been sorted
+by ascending original index*.  Each coordinate entry (r, c) is replaced by
+q_rc + eps_rc with
+
+    eps_rc = eps ** (2 ** (d*r + c)),   0 < eps << 1,
+
+so perturbations are strictly ordered by (index, coordinate): a smaller index and, within
+one point, an earlier coordinate get the larger perturbation.  The ones column is never
+perturbed.  Expanding the perturbed determinant gives
+
+    D(eps) = sum over partial matchings S of rows to coordinate columns of
+             coef(S) * prod_{(r,c) in S} eps_rc,
+
+and since exponents are sums of distinct powers of two, distinct S give distinct powers of
+eps: the monomial with the smaller exponent sum E(S) = sum 2**(d*r+c) dominates.  The
+sign of D(eps) for eps -> 0+ is therefore the sign of the first non-zero coef(S) in
+increasing E(S) order.
+
+This script expands D(eps) symbolically (sympy), reads coef(S) off the expansion and
+identifies it with +/- the complementary minor det[M(kept rows, kept columns + ones)],
+verifying the identity symbolically.  Walking the terms in E(S) order it drops S = {}
+(the unperturbed determinant, evaluated by the predicate itself), drops any term whose
+minor (same kept rows and columns) already appeared earlier (it is then known to be zero)
+and stops at the first term whose minor is the constant 1.
+
+Tables:
+  * kSosOrient3:   4 rows, columns (x, y, z)      -> orient3d
+  * kSosLifted4:   5 rows, columns (x, y, z, h)   -> insphere / power (h = |p|^2 - w)
+
+Usage:  python3 scripts/gen_sos.py            # rewrite src/geometry/sos_tables.hpp
+        python3 scripts/gen_sos.py --check    # exit 1 if the committed file differs
+"""
+import itertools
+import os
+import sys
+
+import sympy as sp
+
+COLS = "xyzh"
+
+
+def derive(nrows, ncoord):
+    m = [[sp.Symbol(f"m{r}{c}") for c in range(ncoord)] for r in range(nrows)]
+    eps = {(r, c): sp.Symbol(f"e{r}{c}") for r in range(nrows) for c in range(ncoord)}
+    base = sp.Matrix(nrows, ncoord + 1, lambda r, c: m[r][c] if c < ncoord else 1)
+    pert = sp.Matrix(nrows, ncoord + 1,
+                     lambda r, c: m[r][c] + eps[(r, c)] if c < ncoord else 1)
+    eps_syms = [eps[k] for k in sorted(eps)]
+    poly = sp.Poly(sp.expand(pert.det(method="berkowitz")), *eps_syms)
+
+    terms = []
+    for powers, coef in poly.terms():
+        s = [k for k, p in zip(sorted(eps), powers) if p]
+        assert all(p <= 1 for p in powers)
+        rows = {r for r, _ in s}
+        cols = {c for _, c in s}
+        assert len(rows) == len(s) and len(cols) == len(s)  # a matching
+        keep_r = [r for r in range(nrows) if r not in rows]
+        keep_c = [c for c in range(ncoord) if c not in cols] + [ncoord]
+        minor = base.extract(keep_r, keep_c).det(method="berkowitz") if keep_r else sp.Integer(1)
+        if sp.expand(coef - minor) == 0:
+            sign = 1
+        elif sp.expand(coef + minor) == 0:
+            sign = -1
+        else:
+            raise AssertionError(f"coefficient of {s} is not +/- its complementary minor")
+        expo = sum(2 ** (ncoord * r + c) for r, c in s)
+        terms.append((expo, s, sign, keep_r, keep_c[:-1]))
+    terms.sort(key=lambda t: t[0])
+    assert terms[0][1] == []  # the unperturbed determinant comes first
+
+    table, seen = [], set()
+    for expo, s, sign, keep_r, keep_c in terms[1:]:
+        key = (tuple(keep_r), tuple(keep_c))
+        if key in seen:
+            continue
+        seen.add(key)
+        table.append((sign, keep_r, keep_c, s))
+        if not keep_c:  # minor is det[1] = 1: a non-zero constant, the walk always ends here
+            break
+    return table
+
+
+def fmt_table(name, nrows, ncoord, table):
+    lines = [f"// {name}: {nrows} rows (points sorted by ascending index), perturbed columns "
+             f"{', '.join(COLS[:ncoord])}; {len(table)} terms.",
+             f"GDEL_HD constexpr SosTerm {name.lower()}_term(int i) {{",
+             "  constexpr SosTerm t[] = {"]
+    for sign, keep_r, keep_c, s in table:
+        rmask = sum(1 << r for r in keep_r)
+        cmask = sum(1 << c for c in keep_c)
+        mono = "*".join(f"e{r}{COLS[c]}" for r, c in s)
+        minor = (f"rows {{{','.join(map(str, keep_r))}}} cols ({''.join(COLS[c] for c in keep_c)}1)"
+                 if keep_c else "constant 1")
+        lines.append(f"      {{{sign:+d}, 0x{rmask:02x}, 0x{cmask:x}}},  // {mono:<16} {minor}")
+    lines += ["  };", "  return t[i];", "}",
+              f"inline constexpr int k{name}Terms = {len(table)};"]
+    return "\n".join(lines)
+
+
+def render():
+    out = [
+        "// GENERATED by scripts/gen_sos.py -- do not edit by hand.",
+        "// Regenerate:  python3 scripts/gen_sos.py          (needs sympy; see requirements-dev.txt)",
+        "// Check:       python3 scripts/gen_sos.py --check",
+        "//",
+        "// Simulation-of-simplicity term sequences (Edelsbrunner-Muecke). Rows are the points",
+        "// sorted by ascending original index; entry (r, c) is perturbed by eps^(2^(d*r + c))",
+        "// (d = number of perturbed columns), the ones column is not perturbed. Each term is",
+        "// sign * det[ rows in `rows` mask | columns in `cols` mask, then the ones column ],",
+        "// listed in decreasing order of the magnitude of its eps monomial. The unperturbed",
+        "// determinant (first term) is omitted, as are terms whose minor already appeared.",
+        "// The last term of each table has cols == 0: its minor is the constant 1.",
+        "#pragma once",
+        "",
+        '#include "core/macros.hpp"',
+        "",
+        "namespace gdel::geom::sos {",
+        "",
+        "struct SosTerm {",
+        "  signed char sign;   // +1 or -1",
+        "  unsigned char rows; // bit r: sorted row r kept",
+        "  unsigned char cols; // bit c: coordinate column c kept (0 x, 1 y, 2 z, 3 h)",
+        "};",
+        "",
+        fmt_table("Orient3", 4, 3, derive(4, 3)),
+        "",
+        fmt_table("Lifted4", 5, 4, derive(5, 4)),
+        "",
+        "}  // namespace gdel::geom::sos",
+        "",
+    ]
+    return "\n".join(out)
+
+
+def main():
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    path = os.path.join(root, "src", "geometry", "sos_tables.hpp")
+    text = render()
+    if "--check" in sys.argv[1:]:
+        with open(path) as f:
+            same = f.read() == text
+        print("sos_tables.hpp is up to date" if same else "sos_tables.hpp differs from regeneration")
+        return 0 if same else 1
+    with open(path, "w") as f:
+        f.write(text)
+    print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,96 @@
+// gdel::delaunay: argument checks, backend dispatch, canonical order, verification.
+// The CPU backend is instantiated here, the CUDA one in delaunay_cuda.cu.
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "api/delaunay_impl.hpp"
+#include "api/validate.hpp"
+#include "core/backend_select.hpp"
+#include "gdel/verify.hpp"
+#include "mesh/canonical.hpp"
+
+namespace gdel {
+
+const char* to_string(Algorithm a) {
+  switch (a) {
+    case Algorithm::Auto: return "auto";
+    case Algorithm::gflip3d: return "gflip3d";
+    case Algorithm::gdel3d: return "gdel3d";
+  }
+  return "?";
+}
+
+std::string Stats::to_string() const {
+  std::ostringstream s;
+  s << "algorithm " << algorithm << " on " << backend << ": " << seconds << " s, " << points << " points ("
+    << distinct_points << " distinct)\n";
+  for (auto& [name, t] : stages) s << "  " << name << ": " << t << " s\n";
+  s << "  rounds " << rounds << ", flip iterations " << flip_iterations << ", flips 2-3 " << flips23 << ", 3-2 "
+    << flips32 << ", exact evaluations " << exact_evaluations << ", failed vertices " << failed_vertices
+    << ", peak memory " << peak_bytes / (1024.0 * 1024.0) << " MiB";
+  if (!verify_summary.empty()) s << "\n  verify: " << verify_summary;
+  return s.str();
+}
+
+namespace {
+
+// Each tet rotated to its canonical even permutation (neighbours permuted alike),
+// tets sorted, neighbour ids remapped.
+void canonicalize(Triangulation& t) {
+  const std::size_t m = t.tets.size() / 4;
+  std::vector<std::array<std::int64_t, 4>> key(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    std::array<std::int64_t, 4> enc;
+    for (int k = 0; k < 4; ++k) enc[k] = std::int64_t(t.tets[4 * i + k]) * 4 + k;  // value, then position
+    key[i] = canonical_tet(enc);
+  }
+  std::vector<std::size_t> order(m);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  std::vector<std::int32_t> newid(m);
+  for (std::size_t r = 0; r < m; ++r) newid[order[r]] = static_cast<std::int32_t>(r);
+  std::vector<std::int32_t> tets(4 * m), nb(4 * m);
+  for (std::size_t r = 0; r < m; ++r) {
+    const std::size_t i = order[r];
+    for (int k = 0; k < 4; ++k) {
+      const int from = static_cast<int>(key[i][k] & 3);
+      tets[4 * r + k] = t.tets[4 * i + from];
+      const std::int32_t o = t.neighbors[4 * i + from];
+      nb[4 * r + k] = o < 0 ? -1 : newid[o];
+    }
+  }
+  t.tets.swap(tets);
+  t.neighbors.swap(nb);
+}
+
+}  // namespace
+
+Triangulation delaunay(std::span<const double> points, const Options& options) {
+  const int k = api::validate_points(points);
+  std::vector<double> scaled_copy;
+  std::span<const double> work = points;
+  if (k != 0) {
+    scaled_copy = api::scaled(points, k);
+    work = scaled_copy;
+  }
+  if (options.algorithm == Algorithm::gdel3d)
+    throw BackendUnavailable("algorithm gdel3d (star-splaying repair) is not implemented yet; use gflip3d");
+  Triangulation t;
+  if (resolve_backend(options.backend) == Backend::Cuda) {
+#if defined(GDEL_HAVE_CUDA)
+    t = cuda_backend::delaunay(work, options);
+#endif
+  } else {
+    par::Context<par::Cpu> ctx;
+    t = api::delaunay_on(ctx, work, options);
+  }
+  if (options.canonical_order) canonicalize(t);
+  if (options.verify) {
+    auto r = verify(work, t.tets, {}, options.backend);
+    t.stats.verify_summary = r.summary();
+  }
+  return t;
+}
+
+}  // namespace gdel

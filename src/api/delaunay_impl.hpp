@@ -1,0 +1,168 @@
+// gdel::delaunay on one backend: validation → duplicate removal → Hilbert sort →
+// algorithm → output in input ids. Written once over the backend tag.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "flip/gflip3d.hpp"
+#include "gdel/delaunay.hpp"
+#include "gdel/errors.hpp"
+#include "sort/point_sort.hpp"
+
+namespace gdel::api {
+
+using par::Buffer;
+using par::Context;
+
+template <class B>
+Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const Options& opt) {
+  using I64 = std::int64_t;
+  auto t_start = std::chrono::steady_clock::now();
+  auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+  Triangulation out;
+  Stats& st = out.stats;
+  st.backend = B::name;
+  st.algorithm = "gflip3d";
+  const I64 n = static_cast<I64>(points.size() / 3);
+  st.points = n;
+
+  // --- prepare: upload, duplicates, spatial order ------------------------------------
+  auto t0 = std::chrono::steady_clock::now();
+  Buffer<double, B> X(ctx);
+  X.assign(points.data(), points.size());
+  const double* xp = X.data();
+  Buffer<I64, B> rep(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));
+  I64* rp = rep.data();
+  const I64 m = sort::duplicate_representatives(ctx, xp, n, rp);
+  st.distinct_points = m;
+  out.representative.resize(static_cast<std::size_t>(n));
+  {
+    auto r = rep.to_host();
+    for (I64 i = 0; i < n; ++i) out.representative[i] = static_cast<std::int32_t>(r[i]);
+  }
+  if (m < 4) throw DegenerateInput("need at least 4 distinct points, got " + std::to_string(m));
+  Buffer<I64, B> ids(ctx, static_cast<std::size_t>(m));  // distinct points (input ids, ascending)
+  I64* idp = ids.data();
+  par::select_indices(ctx, static_cast<std::size_t>(n), idp, [=] GDEL_HD(I64 i) { return rp[i] == i; });
+  // bounding box
+  double lo[3], hi[3];
+  {
+    Buffer<double, B> coord(ctx, static_cast<std::size_t>(m));
+    double* cp = coord.data();
+    for (int a = 0; a < 3; ++a) {
+      par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) { cp[k] = xp[3 * idp[k] + a]; });
+      lo[a] = par::reduce_min(ctx, cp, static_cast<std::size_t>(m), HUGE_VAL);
+      hi[a] = par::reduce_max(ctx, cp, static_cast<std::size_t>(m), -HUGE_VAL);
+    }
+  }
+  // internal order: distinct points along the Hilbert curve; slot m = ∞ / kernel point
+  Buffer<double, B> P(ctx, static_cast<std::size_t>(3 * (m + 1)));
+  Buffer<I64, B> sid(ctx, static_cast<std::size_t>(m + 1));
+  {
+    Buffer<double, B> dx(ctx, static_cast<std::size_t>(3 * m));
+    double* dxp = dx.data();
+    par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) {
+      for (int a = 0; a < 3; ++a) dxp[3 * k + a] = xp[3 * idp[k] + a];
+    });
+    Buffer<I64, B> ord(ctx, static_cast<std::size_t>(m));
+    I64* op = ord.data();
+    sort::hilbert_order(ctx, dxp, m, lo, hi, op);
+    double* pp = P.data();
+    I64* sp = sid.data();
+    par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) {
+      for (int a = 0; a < 3; ++a) pp[3 * k + a] = dxp[3 * op[k] + a];
+      sp[k] = idp[op[k]];
+    });
+    par::parallel_for(ctx, 1, [=] GDEL_HD(I64) { sp[m] = n; });  // K perturbs least... any fixed index works
+  }
+  st.stages.push_back({"prepare (duplicates, Hilbert sort)", since(t0)});
+
+  // --- algorithm -------------------------------------------------------------------------
+  flip::FlipConfig cfg;
+  cfg.rule = opt.insertion;
+  cfg.terminal = opt.terminal_flipping;
+  flip::GFlip3D<B> alg(ctx, P, sid, m, cfg, st);
+  alg.run();
+
+  // --- output ----------------------------------------------------------------------------
+  t0 = std::chrono::steady_clock::now();
+  auto& mesh = alg.mesh();
+  mesh.compact();
+  const I64 nt = mesh.size();
+  mesh::MeshView mv = mesh.view();
+  const vid_t inf = alg.infinite();
+  const flip::Geo g = alg.geo();
+  // failed vertices: facets between finite tets that are not locally Delaunay (SoS)
+  {
+    Buffer<std::int8_t, B> sgn(ctx, static_cast<std::size_t>(4 * std::max<I64>(nt, 1)));
+    std::int8_t* sg = sgn.data();
+    auto relevant = [=] GDEL_HD(I64 f) -> bool {
+      const tid_t t = static_cast<tid_t>(f >> 2);
+      const fid_t o = mv.opp[f];
+      if (o < 0 || facet_tet(o) < t) return false;
+      if (flip::Geo::inf_slot(mv.tet[t].v, inf) >= 0) return false;
+      return flip::Geo::inf_slot(mv.tet[facet_tet(o)].v, inf) < 0;
+    };
+    st.exact_evaluations += par::two_stage_signs(
+        ctx, 4 * nt, sg,
+        [=] GDEL_HD(I64 f) -> std::int8_t {
+          if (!relevant(f)) return 0;
+          return static_cast<std::int8_t>(g.insphere<false>(mv.tet[f >> 2].v, flip::apex_of(mv, mv.opp[f]), nullptr));
+        },
+        [=] GDEL_HD(I64 f, double* work) -> std::int8_t {
+          return static_cast<std::int8_t>(g.insphere<true>(mv.tet[f >> 2].v, flip::apex_of(mv, mv.opp[f]), work));
+        },
+        geom::kPredicateWork);
+    Buffer<std::int8_t, B> fv(ctx, static_cast<std::size_t>(m));
+    std::int8_t* fvp = fv.data();
+    par::fill(ctx, fvp, static_cast<std::size_t>(m), std::int8_t(0));
+    par::parallel_for(ctx, 4 * nt, [=] GDEL_HD(I64 f) {
+      if (sg[f] <= 0) return;
+      const vid_t* v = mv.tet[f >> 2].v;
+      const int i = static_cast<int>(f & 3);
+      for (int k = 0; k < 3; ++k) fvp[v[face_vertex(i, k)]] = 1;
+    });
+    Buffer<I64, B> fl(ctx, static_cast<std::size_t>(m));
+    std::size_t nfv = par::select_indices(ctx, static_cast<std::size_t>(m), fl.data(),
+                                          [=] GDEL_HD(I64 v) { return fvp[v] != 0; });
+    st.failed_vertices = static_cast<I64>(nfv);
+    auto flh = fl.to_host();
+    auto sidh = sid.to_host();
+    out.failed_vertices.reserve(nfv);
+    for (std::size_t k = 0; k < nfv; ++k) out.failed_vertices.push_back(static_cast<std::int32_t>(sidh[flh[k]]));
+    std::sort(out.failed_vertices.begin(), out.failed_vertices.end());
+  }
+  // finite tets, input ids, neighbours (-1 across the hull)
+  Buffer<tid_t, B> fin(ctx, static_cast<std::size_t>(nt + 1));
+  tid_t* fp = fin.data();
+  par::parallel_for(ctx, nt, [=] GDEL_HD(I64 t) { fp[t] = flip::Geo::inf_slot(mv.tet[t].v, inf) < 0 ? 1 : 0; });
+  const tid_t nfin = par::counts_to_offsets(ctx, fp, static_cast<std::size_t>(nt));
+  Buffer<std::int32_t, B> tv(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
+  Buffer<std::int32_t, B> tn(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
+  std::int32_t* tvp = tv.data();
+  std::int32_t* tnp = tn.data();
+  const I64* sp = sid.data();
+  par::parallel_for(ctx, nt, [=] GDEL_HD(I64 t) {
+    if (fp[t + 1] == fp[t]) return;  // infinite tet
+    const I64 d = fp[t];
+    for (int i = 0; i < 4; ++i) {
+      tvp[4 * d + i] = static_cast<std::int32_t>(sp[mv.tet[t].v[i]]);
+      const fid_t o = mv.opp[4 * t + i];
+      const tid_t u = facet_tet(o);
+      tnp[4 * d + i] = (o < 0 || fp[u + 1] == fp[u]) ? -1 : fp[u];
+    }
+  });
+  tv.resize(static_cast<std::size_t>(4 * nfin));
+  tn.resize(static_cast<std::size_t>(4 * nfin));
+  out.tets = tv.to_host();
+  out.neighbors = tn.to_host();
+  st.peak_bytes = static_cast<I64>(ctx.memory().peak());
+  st.stages.push_back({"output", since(t0)});
+  st.seconds = since(t_start);
+  return out;
+}
+
+}  // namespace gdel::api

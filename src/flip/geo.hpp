@@ -1,0 +1,71 @@
+// Predicates of gFlip3D over internal vertex ids, with the point at infinity.
+//
+// Internal ids 0..n-1 are the (Hilbert-sorted, deduplicated) points; id n is the
+// point at infinity, stored as the "kernel point" K: a point strictly inside the
+// first tetrahedron, hence strictly inside every later hull (the hull only grows).
+// Tets containing ∞ are the cones from K over hull facets; they partition the
+// outside of the hull. Rules (ALGORITHMS.md §1.5):
+//   orient3d with ∞ among the arguments = -orient3d with K in its place;
+//   insphere(tet ∋ ∞, e) = orient3d(hull facet of the tet, e): inside iff beyond;
+//   insphere(tet, ∞) = outside.
+// Every decision has a fast form (floating-point filter; returns kUndecided when it
+// cannot certify a non-zero sign) and an exact form (exact arithmetic, then
+// simulation of simplicity by original input index: never 0).
+#pragma once
+
+#include <cstdint>
+
+#include "geometry/predicates.hpp"
+#include "mesh/conventions.hpp"
+#include "parallel/exact_batch.hpp"
+
+namespace gdel::flip {
+
+struct Geo {
+  const double* xyz;        // n + 1 points (internal order), the last is K
+  const std::int64_t* sid;  // SoS index per internal id (original input index; K: n_input)
+  vid_t inf;                // internal id of ∞ (= n)
+
+  GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
+
+  // orient3d(a,b,c,d) > 0 iff (a,b,c,d) is positively oriented.
+  GDEL_HD int orient_fast(vid_t a, vid_t b, vid_t c, vid_t d) const {
+    int s = geom::orient3d_filter(p(a), p(b), p(c), p(d));
+    if (s == geom::kUncertain || s == 0) return par::kUndecided;
+    bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
+    return neg ? -s : s;
+  }
+  GDEL_HD int orient_exact(vid_t a, vid_t b, vid_t c, vid_t d, double* work) const {
+    int s = geom::orient3d_sos(p(a), p(b), p(c), p(d), sid[a], sid[b], sid[c], sid[d], work);
+    bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
+    return neg ? -s : s;
+  }
+  template <bool Exact>
+  GDEL_HD int orient(vid_t a, vid_t b, vid_t c, vid_t d, double* work) const {
+    if constexpr (Exact) return orient_exact(a, b, c, d, work);
+    else return orient_fast(a, b, c, d);
+  }
+
+  GDEL_HD static int inf_slot(const vid_t* t, vid_t inf) {
+    for (int i = 0; i < 4; ++i)
+      if (t[i] == inf) return i;
+    return -1;
+  }
+
+  // > 0 iff e is strictly inside the circumsphere of the positive tet t.
+  template <bool Exact>
+  GDEL_HD int insphere(const vid_t* t, vid_t e, double* work) const {
+    if (e == inf) return -1;
+    int j = inf_slot(t, inf);
+    if (j >= 0) return orient<Exact>(t[face_vertex(j, 0)], t[face_vertex(j, 1)], t[face_vertex(j, 2)], e, work);
+    if constexpr (Exact) {
+      return geom::insphere_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]], sid[t[2]],
+                                sid[t[3]], sid[e], work);
+    } else {
+      int s = geom::insphere_filter(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
+      return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
+    }
+  }
+};
+
+}  // namespace gdel::flip

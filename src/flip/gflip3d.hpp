@@ -1,0 +1,863 @@
+// gFlip3D: massively parallel point insertion and flipping (ALGORITHMS.md §3),
+// written once over the backend tag B.
+//
+// Input: n distinct points in internal order (Hilbert-sorted) plus the SoS index of
+// each (its original input index). Output: the mesh (internal ids, ∞ = n), the
+// failed vertices and statistics. Host orchestration only; all per-element work is
+// in flip_kernels.hpp and runs through the parallel layer.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <cstdlib>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "flip/flip_kernels.hpp"
+#include "gdel/delaunay.hpp"
+#include "gdel/errors.hpp"
+#include "parallel/exact_batch.hpp"
+#include "parallel/primitives.hpp"
+
+namespace gdel::flip {
+
+using par::Buffer;
+using par::Context;
+
+struct FlipConfig {
+  InsertionRule rule = InsertionRule::Circumcenter;
+  bool terminal = false;
+  std::int64_t max_flip_iterations = 1 << 20;  // per flip loop; a safety net, never reached in practice
+};
+
+// Runs pass 1 (fast) on n items; items for which fast(i) returns false are
+// collected and run through exact(i, work) with scratch. Returns the exact count.
+template <class B, class Fast, class Exact>
+std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact) {
+  if (n <= 0) return 0;
+  par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
+  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(n));
+  std::int64_t* lp = list.data();
+  std::int64_t m = static_cast<std::int64_t>(par::select_indices(
+      ctx, static_cast<std::size_t>(n), lp, [=] GDEL_HD(std::int64_t i) { return undecided[i] != 0; }));
+  par::for_each_with_scratch(ctx, m, geom::kPredicateWork,
+                             [=] GDEL_HD(std::int64_t k, double* work) { exact(lp[k], work); });
+  return m;
+}
+
+template <class B>
+class GFlip3D {
+ public:
+  // xyz: 3(n+1) doubles on the backend (slot n is overwritten with the kernel point);
+  // sid: n+1 SoS indices (slot n = SoS index of the kernel point).
+  GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
+          Stats& stats)
+      : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
+        aux_best_(ctx), aux_split_(ctx), aux_vote_(ctx), aux_mark_(ctx), aux_next_(ctx), msg_(ctx), log_(ctx),
+        log_next_(ctx) {}
+
+  // Debug aid: GDEL_CHECK_MESH=1 runs the structural invariant checker after every
+  // step and throws at the first violation (validate level 1; slow).
+  void check_mesh(const char* where) {
+    if (!debug_) return;
+    auto p = mesh::check_invariants(mesh_, n_ + 1);
+    if (!p.ok()) throw Error(std::string("gflip3d mesh invariant broken ") + where + ": " + p.items[0]);
+  }
+
+  void run() {
+    debug_ = std::getenv("GDEL_CHECK_MESH") != nullptr;
+    auto t0 = std::chrono::steady_clock::now();
+    init();
+    check_mesh("after init");
+    stage("initial tetrahedron + location", t0);
+    bool flipping = !cfg_.terminal;
+    bool flipped_all_along = flipping;
+    std::int64_t remaining = static_cast<std::int64_t>(todo_.size());
+    while (remaining > 0) {
+      auto tr = std::chrono::steady_clock::now();
+      std::int64_t inserted = insert_round();
+      check_mesh("after split");
+      st_.rounds++;
+      t_insert_ += since(tr);
+      remaining = static_cast<std::int64_t>(todo_.size());
+      if (flipping) {
+        auto tf = std::chrono::steady_clock::now();
+        flip_loop(/*all_tets=*/false, /*with_log=*/remaining > 0);
+        t_flip_ += since(tf);
+        if (remaining > 0) {
+          auto tl = std::chrono::steady_clock::now();
+          relocate_through_dag();
+          t_relocate_ += since(tl);
+        }
+        // Tail rule (ALGORITHMS.md §3.1): the last tiny rounds are not worth a flip
+        // loop each; insert them by splitting and flip once at the end.
+        if (remaining < inserted && inserted < n_ / 10) {
+          flipping = false;
+          flipped_all_along = false;
+        }
+      }
+    }
+    st_.stages.push_back({"insertion (split + relocate)", t_insert_});
+    if (flipped_all_along) {
+      st_.stages.push_back({"flipping", t_flip_});
+      st_.stages.push_back({"relocation through flip DAG", t_relocate_});
+    } else {
+      st_.stages.push_back({"flipping (InsFlip rounds)", t_flip_});
+      st_.stages.push_back({"relocation through flip DAG", t_relocate_});
+      auto tf = std::chrono::steady_clock::now();
+      flip_loop(/*all_tets=*/true, /*with_log=*/false);
+      st_.stages.push_back({"final flipping of all tets", since(tf)});
+    }
+  }
+
+  mesh::TetMesh<B>& mesh() { return mesh_; }
+  vid_t infinite() const { return static_cast<vid_t>(n_); }
+  Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_)}; }
+
+ private:
+  static double since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
+  void stage(const char* name, std::chrono::steady_clock::time_point t) { st_.stages.push_back({name, since(t)}); }
+
+  // Per-tet auxiliary arrays follow the mesh capacity.
+  void grow_aux() {
+    const std::size_t cap = static_cast<std::size_t>(mesh_.capacity());
+    auto grow = [&](auto& buf, auto init, std::size_t per) {
+      std::size_t old = buf.size();
+      if (old >= cap * per) return;
+      buf.resize(cap * per);
+      par::fill(ctx_, buf.data() + old, cap * per - old, init);
+    };
+    grow(aux_best_, std::uint64_t(0), 1);
+    grow(aux_split_, std::int32_t(-1), 1);
+    grow(aux_vote_, std::int32_t(INT_MAX), 1);
+    grow(aux_mark_, std::int32_t(-1), 1);
+    grow(aux_next_, std::int64_t(-1), 1);
+    grow(msg_, fid_t(-1), 4);
+  }
+  mesh::SlotSource claim(std::int64_t k) {
+    mesh::SlotSource src = mesh_.claim(k);
+    grow_aux();
+    return src;
+  }
+
+  // --- initial tetrahedron -------------------------------------------------------
+  // Index of the point maximising f (ties: smallest index). Synchronizes.
+  template <class F>
+  std::int64_t argmax(F f) {
+    Buffer<double, B> v(ctx_, static_cast<std::size_t>(n_));
+    double* vp = v.data();
+    par::parallel_for(ctx_, n_, [=] GDEL_HD(std::int64_t i) {
+      const double x = f(i);
+      vp[i] = (x == x) ? x : -1.0;  // NaN never wins
+    });
+    double best = par::reduce_max(ctx_, vp, static_cast<std::size_t>(n_), -1.0);
+    Buffer<std::int64_t, B> idx(ctx_, static_cast<std::size_t>(n_));
+    std::int64_t* ip = idx.data();
+    par::parallel_for(ctx_, n_, [=] GDEL_HD(std::int64_t i) { ip[i] = vp[i] == best ? i : INT64_MAX; });
+    const std::int64_t r = par::reduce_min(ctx_, ip, static_cast<std::size_t>(n_), INT64_MAX);
+    return r == INT64_MAX ? 0 : r;
+  }
+
+  // 1 / (largest |coordinate|): choices (not decisions) are computed on normalised
+  // coordinates so that they neither overflow nor underflow.
+  double inverse_scale() {
+    const double* X = xyz_.data();
+    Buffer<double, B> a(ctx_, static_cast<std::size_t>(3 * n_));
+    double* ap = a.data();
+    par::parallel_for(ctx_, 3 * n_, [=] GDEL_HD(std::int64_t i) { ap[i] = X[i] < 0 ? -X[i] : X[i]; });
+    const double m = par::reduce_max(ctx_, ap, static_cast<std::size_t>(3 * n_), 0.0);
+    return m > 0 ? 1.0 / m : 1.0;
+  }
+
+  void init() {
+    if (n_ < 4) throw DegenerateInput("need at least 4 distinct points, got " + std::to_string(n_));
+    const double* X = xyz_.data();
+    inv_scale_ = inverse_scale();
+    const double sc = inv_scale_;
+    // extreme points in x (as coordinates; only a choice)
+    std::int64_t a = argmax([=] GDEL_HD(std::int64_t i) { return -X[3 * i]; });
+    std::int64_t b = argmax([=] GDEL_HD(std::int64_t i) { return X[3 * i]; });
+    if (a == b) b = (a == 0) ? 1 : 0;
+    const auto pa = host_point(a), pb = host_point(b);
+    const double ax = pa[0] * sc, ay = pa[1] * sc, az = pa[2] * sc;
+    const double ux = pb[0] * sc - ax, uy = pb[1] * sc - ay, uz = pb[2] * sc - az;
+    std::int64_t c = argmax([=] GDEL_HD(std::int64_t i) {
+      double wx = X[3 * i] * sc - ax, wy = X[3 * i + 1] * sc - ay, wz = X[3 * i + 2] * sc - az;
+      double cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
+      return cx * cx + cy * cy + cz * cz;
+    });
+    const auto pc = host_point(c);
+    const double bx = pb[0] * sc, by = pb[1] * sc, bz = pb[2] * sc, cx = pc[0] * sc, cy = pc[1] * sc,
+                 cz = pc[2] * sc;
+    std::int64_t d = argmax([=] GDEL_HD(std::int64_t i) {
+      const double A[3] = {ax, ay, az}, Bp[3] = {bx, by, bz}, C[3] = {cx, cy, cz};
+      const double D[3] = {X[3 * i] * sc, X[3 * i + 1] * sc, X[3 * i + 2] * sc};
+      double o = orient_value(A, Bp, C, D);
+      return o < 0 ? -o : o;
+    });
+    // Exact check; when the float choice failed, search exactly.
+    int s = exact_orient_host(a, b, c, d);
+    if (s == 0) {
+      bool found = false;
+      // The triangle a,b,c may be exactly collinear: try every c, then every d.
+      for (int pass = 0; pass < 2 && !found; ++pass) {
+        std::int64_t cand = first_noncoplanar(a, b, c);
+        if (cand >= 0) {
+          d = cand;
+          found = true;
+        } else {
+          std::int64_t c2 = first_noncollinear(a, b);
+          if (c2 < 0 || c2 == c) break;
+          c = c2;
+        }
+      }
+      if (!found)
+        throw DegenerateInput("all " + std::to_string(n_) +
+                              " distinct points are coplanar (or collinear): no 3-D triangulation exists");
+      s = exact_orient_host(a, b, c, d);
+    }
+    if (s < 0) std::swap(c, d);
+    const vid_t t0[4] = {vid_t(a), vid_t(b), vid_t(c), vid_t(d)};
+    set_kernel_point(t0);
+
+    // 5 tets: t0 and, for each face i of t0, (face reversed, ∞).
+    const vid_t inf = static_cast<vid_t>(n_);
+    std::vector<mesh::Tet> tets(5);
+    for (int k = 0; k < 4; ++k) tets[0].v[k] = t0[k];
+    for (int i = 0; i < 4; ++i) {
+      tets[1 + i].v[0] = t0[face_vertex(i, 0)];
+      tets[1 + i].v[1] = t0[face_vertex(i, 2)];
+      tets[1 + i].v[2] = t0[face_vertex(i, 1)];
+      tets[1 + i].v[3] = inf;
+    }
+    std::vector<fid_t> opp(20, -1);
+    for (int t = 0; t < 5; ++t)
+      for (int i = 0; i < 4; ++i)
+        for (int u = 0; u < 5; ++u)
+          for (int j = 0; j < 4; ++j) {
+            if (u == t) continue;
+            int shared = 0;
+            for (int k = 0; k < 3; ++k)
+              for (int l = 0; l < 3; ++l)
+                shared += tets[t].v[face_vertex(i, k)] == tets[u].v[face_vertex(j, l)];
+            if (shared == 3) opp[4 * t + i] = pack_facet(u, j);
+          }
+    mesh_.reserve(std::max<std::int64_t>(8 * n_ + 64, 64));
+    mesh_.tets().assign(tets.data(), 5);
+    mesh_.tets().resize(static_cast<std::size_t>(mesh_.capacity()));
+    mesh_.opp().assign(opp.data(), 20);
+    mesh_.opp().resize(static_cast<std::size_t>(4 * mesh_.capacity()));
+    std::vector<std::uint8_t> state(5, mesh::kAlive);
+    mesh_.state().assign(state.data(), 5);
+    mesh_.state().resize(static_cast<std::size_t>(mesh_.capacity()));
+    {
+      std::uint8_t* sp = mesh_.state().data();
+      par::parallel_for(ctx_, mesh_.capacity() - 5, [=] GDEL_HD(std::int64_t k) { sp[5 + k] = 0; });
+    }
+    mesh_.face_flags().memset(0);
+    mesh_.set_size(5);
+    grow_aux();
+
+    // Locate every other point: the cones from K over t0's faces partition space;
+    // in cone i a point lies in t0 or in infinite tet 1+i.
+    vert_tet_.resize(static_cast<std::size_t>(n_));
+    tid_t* vt = vert_tet_.data();
+    Geo gk = geo();
+    gk.inf = -1;  // K as a genuine point for the cone test
+    const vid_t K = inf;
+    const vid_t o0 = t0[0], o1 = t0[1], o2 = t0[2], o3 = t0[3];
+    auto locate = [=] GDEL_HD(std::int64_t q, double* work, bool exact) -> bool {
+      if (q == o0 || q == o1 || q == o2 || q == o3) {
+        vt[q] = -1;
+        return true;
+      }
+      const vid_t o[4] = {o0, o1, o2, o3};
+      int c = exact ? split_locate<true>(gk, o, K, vid_t(q), work) : split_locate<false>(gk, o, K, vid_t(q), work);
+      if (c < 0) return false;
+      int s = exact ? gk.orient_exact(o[face_vertex(c, 0)], o[face_vertex(c, 1)], o[face_vertex(c, 2)], vid_t(q), work)
+                    : gk.orient_fast(o[face_vertex(c, 0)], o[face_vertex(c, 1)], o[face_vertex(c, 2)], vid_t(q));
+      if (s == par::kUndecided) return false;
+      vt[q] = s > 0 ? 0 : 1 + c;
+      return true;
+    };
+    Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(n_));
+    st_.exact_evaluations += fast_then_exact(
+        ctx_, n_, und.data(), [=] GDEL_HD(std::int64_t q) { return locate(q, nullptr, false); },
+        [=] GDEL_HD(std::int64_t q, double* work) { locate(q, work, true); });
+    todo_.resize(static_cast<std::size_t>(n_));
+    std::size_t m = par::select_indices(ctx_, static_cast<std::size_t>(n_), todo_.data(),
+                                        [=] GDEL_HD(vid_t q) { return vt[q] >= 0; });
+    todo_.resize(m);
+  }
+
+  std::vector<double> host_point(std::int64_t i) {
+    std::vector<double> p(3);
+    xyz_.copy_to_host(p.data(), 3, static_cast<std::size_t>(3 * i));
+    return p;
+  }
+  int exact_orient_host(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d) {
+    auto pa = host_point(a), pb = host_point(b), pc = host_point(c), pd = host_point(d);
+    std::vector<double> work(geom::kPredicateWork);
+    return geom::orient3d_exact(pa.data(), pb.data(), pc.data(), pd.data(), work.data());
+  }
+  // First point q with orient3d(a,b,c,q) != 0 (exact), or -1.
+  std::int64_t first_noncoplanar(std::int64_t a, std::int64_t b, std::int64_t c) {
+    const double* X = xyz_.data();
+    Buffer<std::int8_t, B> sg(ctx_, static_cast<std::size_t>(n_));
+    std::int8_t* sp = sg.data();
+    st_.exact_evaluations += par::two_stage_signs(
+        ctx_, n_, sp,
+        [=] GDEL_HD(std::int64_t q) -> std::int8_t {
+          return static_cast<std::int8_t>(geom::orient3d_filter(X + 3 * a, X + 3 * b, X + 3 * c, X + 3 * q));
+        },
+        [=] GDEL_HD(std::int64_t q, double* work) -> std::int8_t {
+          return static_cast<std::int8_t>(geom::orient3d_exact(X + 3 * a, X + 3 * b, X + 3 * c, X + 3 * q, work));
+        },
+        geom::kPredicateWork);
+    Buffer<std::int64_t, B> idx(ctx_, static_cast<std::size_t>(n_));
+    std::int64_t* ip = idx.data();
+    par::parallel_for(ctx_, n_, [=] GDEL_HD(std::int64_t q) { ip[q] = sp[q] != 0 ? q : INT64_MAX; });
+    std::int64_t r = par::reduce_min(ctx_, ip, static_cast<std::size_t>(n_), INT64_MAX);
+    return r == INT64_MAX ? -1 : r;
+  }
+  // First point c such that a, b, c are not collinear (exact), or -1.
+  std::int64_t first_noncollinear(std::int64_t a, std::int64_t b) {
+    const double* X = xyz_.data();
+    Buffer<std::int64_t, B> idx(ctx_, static_cast<std::size_t>(n_));
+    std::int64_t* ip = idx.data();
+    par::for_each_with_scratch(ctx_, n_, geom::kPredicateWork, [=] GDEL_HD(std::int64_t q, double* work) {
+      const double *pa = X + 3 * a, *pb = X + 3 * b, *pq = X + 3 * q;
+      const bool collinear = geom::orient2d_proj(pa, pb, pq, 0, 1, work) == 0 &&
+                             geom::orient2d_proj(pa, pb, pq, 1, 2, work) == 0 &&
+                             geom::orient2d_proj(pa, pb, pq, 0, 2, work) == 0;
+      ip[q] = collinear ? INT64_MAX : q;
+    });
+    std::int64_t r = par::reduce_min(ctx_, ip, static_cast<std::size_t>(n_), INT64_MAX);
+    return r == INT64_MAX ? -1 : r;
+  }
+
+  // K = a point strictly inside t0 (checked exactly); stored as point n.
+  void set_kernel_point(const vid_t t[4]) {
+    std::vector<std::vector<double>> p;
+    for (int k = 0; k < 4; ++k) p.push_back(host_point(t[k]));
+    std::vector<double> work(geom::kPredicateWork);
+    // candidate interior points: the centroid, then weighted averages
+    const double wts[4][4] = {{.25, .25, .25, .25}, {.4, .2, .2, .2}, {.2, .4, .2, .2}, {.2, .2, .4, .2}};
+    for (auto& w : wts) {
+      double k[3];
+      for (int a = 0; a < 3; ++a) k[a] = w[0] * p[0][a] + w[1] * p[1][a] + w[2] * p[2][a] + w[3] * p[3][a];
+      bool inside = true;
+      for (int i = 0; i < 4 && inside; ++i)
+        inside = geom::orient3d_exact(p[face_vertex(i, 0)].data(), p[face_vertex(i, 1)].data(),
+                                      p[face_vertex(i, 2)].data(), k, work.data()) > 0;
+      if (inside) {
+        xyz_.set(static_cast<std::size_t>(3 * n_), k[0]);
+        xyz_.set(static_cast<std::size_t>(3 * n_ + 1), k[1]);
+        xyz_.set(static_cast<std::size_t>(3 * n_ + 2), k[2]);
+        return;
+      }
+    }
+    throw Error("gflip3d: no interior point of the first tetrahedron is representable (tetrahedron too thin)");
+  }
+
+  // --- one insertion round: choose, split, relocate ---------------------------------
+  std::int64_t insert_round() {
+    MeshView m = mesh_.view();
+    const Geo g = geo();
+    const vid_t* U = todo_.data();
+    const std::int64_t u = static_cast<std::int64_t>(todo_.size());
+    tid_t* vt = vert_tet_.data();
+    std::uint64_t* best = aux_best_.data();
+    const InsertionRule rule = cfg_.rule;
+    const double is = inv_scale_;
+    // 1. each tet keeps its best point: key = score bits << 32 | ~point
+    par::parallel_for(ctx_, u, [=] GDEL_HD(std::int64_t k) {
+      const vid_t q = U[k];
+      const tid_t t = vt[q];
+      const vid_t* v = m.tet[t].v;
+      // normalised copies of the 4 vertices and q (a choice, not a decision)
+      double P[5][3];
+      for (int a = 0; a < 3; ++a) {
+        for (int l = 0; l < 4; ++l) P[l][a] = g.p(v[l])[a] * is;
+        P[4][a] = g.p(q)[a] * is;
+      }
+      double sc;
+      int j = Geo::inf_slot(v, g.inf);
+      if (rule == InsertionRule::Random) {
+        std::uint64_t h = static_cast<std::uint64_t>(q) * 0x9E3779B97F4A7C15ull;
+        sc = double((h >> 40) + 1);
+      } else if (j >= 0) {
+        sc = orient_value(P[face_vertex(j, 0)], P[face_vertex(j, 1)], P[face_vertex(j, 2)], P[4]);
+      } else if (rule == InsertionRule::Circumcenter) {
+        sc = insphere_value(P[0], P[1], P[2], P[3], P[4]);
+      } else {
+        double c[3];
+        for (int a = 0; a < 3; ++a) c[a] = 0.25 * (P[0][a] + P[1][a] + P[2][a] + P[3][a]);
+        double dx = P[4][0] - c[0], dy = P[4][1] - c[1], dz = P[4][2] - c[2];
+        sc = 1.0 / (1.0 + dx * dx + dy * dy + dz * dz);
+      }
+      float f = (sc > 0 && sc < 3.0e38) ? static_cast<float>(sc) : (sc >= 3.0e38 ? 3.0e38f : 0.0f);
+      std::uint32_t bits;
+      std::memcpy(&bits, &f, sizeof bits);
+      std::uint64_t key = (std::uint64_t(bits) << 32) | std::uint32_t(0xffffffffu - std::uint32_t(q));
+      par::atomic_max(best + t, key);
+    });
+    // 2. winners
+    Buffer<std::int64_t, B> win(ctx_, static_cast<std::size_t>(u));
+    std::int64_t* wp = win.data();
+    std::int64_t k = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(u), wp, [=] GDEL_HD(std::int64_t i) {
+      const vid_t q = U[i];
+      return std::uint32_t(best[vt[q]]) == std::uint32_t(0xffffffffu - std::uint32_t(q));
+    }));
+    // 3. slots: 3 new per split (child 0 reuses the split tet's slot)
+    const mesh::SlotSource src = claim(3 * k);
+    m = mesh_.view();
+    best = aux_best_.data();
+    std::int32_t* split_of = aux_split_.data();
+    Buffer<tid_t, B> child(ctx_, static_cast<std::size_t>(4 * k));
+    Buffer<mesh::Tet, B> old(ctx_, static_cast<std::size_t>(k));
+    Buffer<vid_t, B> newp(ctx_, static_cast<std::size_t>(k));
+    tid_t* ch = child.data();
+    mesh::Tet* op = old.data();
+    vid_t* np = newp.data();
+    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) {
+      const vid_t q = U[wp[s]];
+      const tid_t t = vt[q];
+      ch[4 * s] = t;
+      for (int c = 1; c < 4; ++c) ch[4 * s + c] = src.slot(3 * s + c - 1);
+      op[s] = m.tet[t];
+      np[s] = q;
+      split_of[t] = static_cast<std::int32_t>(s);
+      best[t] = 0;
+      vt[q] = -1;  // inserted
+    });
+    // 4. split: write children, external links (unsplit neighbours written back here)
+    Buffer<fid_t, B> oldopp(ctx_, static_cast<std::size_t>(4 * k));
+    fid_t* oo = oldopp.data();
+    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) {
+      for (int i = 0; i < 4; ++i) oo[4 * s + i] = m.opp[4 * std::int64_t(ch[4 * s]) + i];
+    });
+    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) {
+      const vid_t* o = op[s].v;
+      for (int i = 0; i < 4; ++i) {
+        const tid_t c = ch[4 * s + i];
+        split_child_vertices(o, np[s], i, m.tet[c].v);
+        m.state[c] = mesh::kAlive | mesh::kChanged;
+        for (int kk = 0; kk < 3; ++kk) {
+          const int j = face_vertex(i, kk);
+          m.opp[4 * std::int64_t(c) + kk] = pack_facet(ch[4 * s + j], split_shared_face(j, i));
+          m.set_face_flags(c, kk, mesh::kInternal);
+        }
+        const fid_t ext = oo[4 * s + i];
+        m.set_face_flags(c, 3, 0);
+        const tid_t nt = facet_tet(ext);
+        const int nf = facet_face(ext);
+        const std::int32_t ns = split_of[nt];
+        if (ns >= 0) {
+          m.opp[4 * std::int64_t(c) + 3] = pack_facet(ch[4 * std::int64_t(ns) + nf], 3);
+        } else {
+          m.opp[4 * std::int64_t(c) + 3] = ext;
+          m.opp[4 * std::int64_t(nt) + nf] = pack_facet(c, 3);
+          m.set_face_flags(nt, nf, 0);
+        }
+      }
+    });
+    // 5. relocate the remaining points of split tets among the children
+    Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
+    const Geo gg = g;
+    auto reloc = [=] GDEL_HD(std::int64_t i, double* work, bool exact) -> bool {
+      const vid_t q = U[i];
+      const tid_t t = vt[q];
+      if (t < 0) return true;  // inserted this round
+      const std::int32_t s = split_of[t];
+      if (s < 0) return true;
+      int c = exact ? split_locate<true>(gg, op[s].v, np[s], q, work) : split_locate<false>(gg, op[s].v, np[s], q, work);
+      if (c < 0) return false;
+      vt[q] = ch[4 * std::int64_t(s) + c];
+      return true;
+    };
+    // vt[q] is rewritten by the pass that decides it; undecided items keep the old tet.
+    st_.exact_evaluations += fast_then_exact(
+        ctx_, u, und.data(), [=] GDEL_HD(std::int64_t i) { return reloc(i, nullptr, false); },
+        [=] GDEL_HD(std::int64_t i, double* work) { reloc(i, work, true); });
+    // 6. reset split marks, drop inserted points from the work list
+    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) { split_of[ch[4 * s]] = -1; });
+    Buffer<vid_t, B> rest(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
+    std::size_t r = par::copy_if(ctx_, U, rest.data(), static_cast<std::size_t>(u),
+                                 [=] GDEL_HD(vid_t q) { return vt[q] >= 0; });
+    rest.resize(r);
+    todo_ = std::move(rest);
+    // the new children are the active set of the next flip loop
+    active_ = std::move(child);
+    return k;
+  }
+
+  // --- flipping ----------------------------------------------------------------------
+  void flip_loop(bool all_tets, bool with_log) {
+    if (all_tets) {
+      std::int64_t sz = mesh_.size();
+      Buffer<tid_t, B> a(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(sz, 1)));
+      const std::uint8_t* stp = mesh_.state().data();
+      std::size_t na = par::select_indices(ctx_, static_cast<std::size_t>(sz), a.data(),
+                                           [=] GDEL_HD(tid_t t) { return (stp[t] & mesh::kAlive) != 0; });
+      a.resize(na);
+      active_ = std::move(a);
+    }
+    log_.clear();
+    log_iters_.assign(1, 0);
+    for (std::int64_t it = 0; it < cfg_.max_flip_iterations; ++it) {
+      const std::int64_t na = static_cast<std::int64_t>(active_.size());
+      if (na == 0) break;
+      if (!flip_iteration(na, with_log)) break;
+      st_.flip_iterations++;
+      check_mesh("after flip iteration");
+    }
+  }
+
+  // One parallel flipping iteration over the active set; false when nothing flipped.
+  bool flip_iteration(std::int64_t na, bool with_log) {
+    MeshView m = mesh_.view();
+    const Geo g = geo();
+    const tid_t* A = active_.data();
+    Buffer<std::int32_t, B> prop(ctx_, static_cast<std::size_t>(na));
+    std::int32_t* pp = prop.data();
+    Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(na));
+    st_.exact_evaluations += fast_then_exact(
+        ctx_, na, und.data(),
+        [=] GDEL_HD(std::int64_t k) {
+          int p = propose_flip<false>(g, m, A[k], nullptr);
+          pp[k] = p;
+          return p != kUndecidedResult;
+        },
+        [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_flip<true>(g, m, A[k], work); });
+    // proposers
+    Buffer<std::int64_t, B> pl(ctx_, static_cast<std::size_t>(na));
+    std::int64_t* plp = pl.data();
+    const std::int64_t np = static_cast<std::int64_t>(par::select_indices(
+        ctx_, static_cast<std::size_t>(na), plp, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
+    if (np == 0) return false;
+    // vote: the smallest proposer index wins each tet; accepted flips are disjoint
+    std::int32_t* vote = aux_vote_.data();
+    par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
+      const std::int64_t k = plp[j];
+      tid_t ts[3];
+      int nt = prop_tets(m, A[k], pp[k], ts);
+      for (int l = 0; l < nt; ++l) par::atomic_min(vote + ts[l], static_cast<std::int32_t>(A[k]));
+    });
+    Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(np));
+    std::int8_t* ap = acc.data();
+    par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
+      const std::int64_t k = plp[j];
+      tid_t ts[3];
+      int nt = prop_tets(m, A[k], pp[k], ts);
+      bool ok = true;
+      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == static_cast<std::int32_t>(A[k]);
+      ap[j] = ok ? 1 : 0;
+    });
+    par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
+      const std::int64_t k = plp[j];
+      tid_t ts[3];
+      int nt = prop_tets(m, A[k], pp[k], ts);
+      for (int l = 0; l < nt; ++l) vote[ts[l]] = INT_MAX;
+    });
+    Buffer<std::int64_t, B> fl(ctx_, static_cast<std::size_t>(np));
+    std::int64_t* flp = fl.data();
+    const std::int64_t nfl = static_cast<std::int64_t>(
+        par::select_indices(ctx_, static_cast<std::size_t>(np), flp, [=] GDEL_HD(std::int64_t j) { return ap[j] != 0; }));
+    // flips' proposer positions in A
+    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { flp[f] = plp[flp[f]]; });
+    if (debug_) {  // accepted flips must touch disjoint, alive tets
+      Buffer<tid_t, B> tt(ctx_, static_cast<std::size_t>(3 * nfl));
+      tid_t* ttp = tt.data();
+      par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
+        tid_t ts[3] = {-1, -1, -1};
+        prop_tets(m, A[flp[f]], pp[flp[f]], ts);
+        for (int l = 0; l < 3; ++l) ttp[3 * f + l] = ts[l];
+      });
+      auto h = tt.to_host();
+      auto st = mesh_.state().to_host();
+      std::vector<tid_t> v;
+      for (std::size_t f = 0; f < h.size() / 3; ++f)
+        if (h[3 * f] == h[3 * f + 1] || h[3 * f] == h[3 * f + 2] || (h[3 * f + 2] >= 0 && h[3 * f + 1] == h[3 * f + 2]))
+          throw Error("gflip3d debug: a flip touches one tet twice: " + std::to_string(h[3 * f]) + " " +
+                      std::to_string(h[3 * f + 1]) + " " + std::to_string(h[3 * f + 2]));
+      for (tid_t x : h)
+        if (x >= 0) {
+          if (!(st[x] & mesh::kAlive)) throw Error("gflip3d debug: flip touches a dead tet " + std::to_string(x));
+          v.push_back(x);
+        }
+      std::sort(v.begin(), v.end());
+      auto dup = std::adjacent_find(v.begin(), v.end());
+      if (dup != v.end()) {
+        auto Ah = active_.to_host();
+        auto flh = fl.to_host();
+        auto pph = prop.to_host();
+        std::string msg = "gflip3d debug: accepted flips overlap on tet " + std::to_string(*dup) + ":";
+        for (std::size_t f = 0; f < h.size() / 3; ++f)
+          if (h[3 * f] == *dup || h[3 * f + 1] == *dup || h[3 * f + 2] == *dup)
+            msg += " [b=" + std::to_string(Ah[flh[f]]) + " pos " + std::to_string(flh[f]) + " prop " +
+                   std::to_string(pph[flh[f]]) + " tets " + std::to_string(h[3 * f]) + "," +
+                   std::to_string(h[3 * f + 1]) + "," + std::to_string(h[3 * f + 2]) + "]";
+        throw Error(msg);
+      }
+    }
+    // count 2-3 flips: each needs one new slot
+    Buffer<std::int64_t, B> is23(ctx_, static_cast<std::size_t>(nfl));
+    std::int64_t* i23 = is23.data();
+    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { i23[f] = prop_type(pp[flp[f]]) == 1 ? 1 : 0; });
+    Buffer<std::int64_t, B> off23(ctx_, static_cast<std::size_t>(nfl + 1));
+    std::int64_t* o23 = off23.data();
+    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { o23[f] = i23[f]; });
+    const std::int64_t n23 = par::counts_to_offsets(ctx_, o23, static_cast<std::size_t>(nfl));
+    st_.flips23 += n23;
+    st_.flips32 += nfl - n23;
+    const mesh::SlotSource src = claim(n23);
+    m = mesh_.view();
+    // records
+    const std::int64_t log0 = static_cast<std::int64_t>(log_.size());
+    log_.resize(static_cast<std::size_t>(log0 + nfl));
+    FlipRec* rec = log_.data() + log0;
+    std::int32_t* mark = aux_mark_.data();
+    fid_t* msg = msg_.data();
+    const std::int32_t iter = static_cast<std::int32_t>(st_.flip_iterations & 0x7fffffff);
+    Buffer<fid_t, B> ext_new(ctx_, static_cast<std::size_t>(6 * nfl));
+    Buffer<fid_t, B> ext_old(ctx_, static_cast<std::size_t>(6 * nfl));
+    fid_t* en = ext_new.data();
+    fid_t* eo = ext_old.data();
+    Buffer<std::int8_t, B> und2(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(nfl, 1)));
+    // flip kernel: (a) build records and new tets' vertices (3-2 ordering may need
+    // exact orientation); (b) write. Pass (a) is split fast/exact.
+    Buffer<std::int8_t, B> tmp(ctx_, 1);
+    auto build = [=] GDEL_HD(std::int64_t f, double* work, bool exact) -> bool {
+      const tid_t b = A[flp[f]];
+      const int p = pp[flp[f]];
+      FlipRec r;
+      vid_t nv[3][4];
+      int nn = flip_outputs(m, g, b, p, r, nv, work);
+      if (r.type == 2) {
+        int s = exact ? order_32<true>(g, r, nv, work) : order_32<false>(g, r, nv, work);
+        if (s == kUndecidedResult) return false;
+      }
+      (void)nn;
+      tid_t ts[3];
+      int nt = prop_tets(m, b, p, ts);
+      for (int l = 0; l < 3; ++l) r.in[l] = l < nt ? ts[l] : -1;
+      rec[f] = r;
+      return true;
+    };
+    st_.exact_evaluations += fast_then_exact(
+        ctx_, nfl, und2.data(), [=] GDEL_HD(std::int64_t f) { return build(f, nullptr, false); },
+        [=] GDEL_HD(std::int64_t f, double* work) { build(f, work, true); });
+    // (b) slots, vertices, internal links, external messages
+    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
+      FlipRec& r = rec[f];
+      vid_t nv[3][4];
+      int nn;
+      if (r.type == 1) {
+        nn = 3;
+        for (int k = 0; k < 3; ++k) {
+          nv[k][0] = r.v[k];
+          nv[k][1] = r.v[(k + 1) % 3];
+          nv[k][2] = r.v[4];
+          nv[k][3] = r.v[3];
+        }
+        r.out[0] = r.in[0];
+        r.out[1] = r.in[1];
+        r.out[2] = src.slot(o23[f]);
+      } else {
+        nn = 2;
+        nv[0][0] = r.v[0], nv[0][1] = r.v[1], nv[0][2] = r.v[2], nv[0][3] = r.v[3];
+        nv[1][0] = r.v[1], nv[1][1] = r.v[0], nv[1][2] = r.v[2], nv[1][3] = r.v[4];
+        r.out[0] = r.in[0];
+        r.out[1] = r.in[1];
+        r.out[2] = -1;
+      }
+      const int no = r.type == 1 ? 2 : 3;
+      // old tets (read before any slot is overwritten)
+      vid_t ov[3][4];
+      fid_t oopp[3][4];
+      for (int o = 0; o < no; ++o)
+        for (int l = 0; l < 4; ++l) {
+          ov[o][l] = m.tet[r.in[o]].v[l];
+          oopp[o][l] = m.opp[4 * std::int64_t(r.in[o]) + l];
+        }
+      for (int o = 0; o < no; ++o) mark[r.in[o]] = iter;
+      int ne = 0;
+      for (int a = 0; a < nn; ++a) {
+        const tid_t sa = r.out[a];
+        for (int l = 0; l < 4; ++l) m.tet[sa].v[l] = nv[a][l];
+        m.state[sa] = mesh::kAlive | mesh::kChanged;
+        for (int l = 0; l < 4; ++l) {
+          vid_t fvx[3];
+          int c = 0;
+          for (int q = 0; q < 4; ++q)
+            if (q != l) fvx[c++] = nv[a][q];
+          auto has = [&](const vid_t* t4) {
+            int h = 0;
+            for (int q = 0; q < 3; ++q)
+              for (int z = 0; z < 4; ++z) h += (t4[z] == fvx[q]);
+            return h == 3;
+          };
+          // internal: another new tet holds the face
+          int other = -1;
+          for (int a2 = 0; a2 < nn && other < 0; ++a2)
+            if (a2 != a && has(nv[a2])) other = a2;
+          if (other >= 0) {
+            int l2 = 0;
+            for (int z = 0; z < 4; ++z) {
+              bool in = false;
+              for (int q = 0; q < 3; ++q) in = in || nv[other][z] == fvx[q];
+              if (!in) l2 = z;
+            }
+            m.opp[4 * std::int64_t(sa) + l] = pack_facet(r.out[other], l2);
+            m.set_face_flags(sa, l, mesh::kInternal);
+            continue;
+          }
+          // external: the old tet that held it
+          for (int o = 0; o < no; ++o) {
+            if (!has(ov[o])) continue;
+            int lo = 0;
+            for (int z = 0; z < 4; ++z) {
+              bool in = false;
+              for (int q = 0; q < 3; ++q) in = in || ov[o][z] == fvx[q];
+              if (!in) lo = z;
+            }
+            msg[4 * std::int64_t(r.in[o]) + lo] = pack_facet(sa, l);
+            en[6 * f + ne] = pack_facet(sa, l);
+            eo[6 * f + ne] = oopp[o][lo];
+            ++ne;
+            m.set_face_flags(sa, l, 0);
+            break;
+          }
+        }
+      }
+    });
+    // adjacency across external faces
+    par::parallel_for(ctx_, 6 * nfl, [=] GDEL_HD(std::int64_t e) {
+      const fid_t nf = en[e];
+      fid_t nb = eo[e];
+      if (nb >= 0) {
+        const tid_t u = facet_tet(nb);
+        const int j = facet_face(nb);
+        if (mark[u] == iter) {
+          nb = msg[4 * std::int64_t(u) + j];
+        } else {
+          m.opp[4 * std::int64_t(u) + j] = nf;
+          m.set_face_flags(u, j, 0);
+        }
+      }
+      m.opp[4 * std::int64_t(facet_tet(nf)) + facet_face(nf)] = nb;
+    });
+    // 3-2 flips free their third slot, in flip order (deterministic free stack)
+    if (nfl > n23) {
+      Buffer<tid_t, B> freed(ctx_, static_cast<std::size_t>(nfl - n23));
+      tid_t* fr = freed.data();
+      par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
+        if (rec[f].type == 2) fr[f - o23[f]] = rec[f].in[2];
+      });
+      mesh_.release(fr, nfl - n23);
+    }
+    // next active set: rejected proposers and the flips' new tets
+    Buffer<tid_t, B> nxt(ctx_, static_cast<std::size_t>(np + 3 * nfl));
+    tid_t* nx = nxt.data();
+    par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) { nx[j] = ap[j] ? -1 : A[plp[j]]; });
+    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
+      for (int a = 0; a < 3; ++a) nx[np + 3 * f + a] = rec[f].out[a];
+    });
+    const std::size_t tot = static_cast<std::size_t>(np + 3 * nfl);
+    par::sort_keys(ctx_, nx, tot);
+    std::size_t nu = par::unique(ctx_, nx, tot);
+    Buffer<tid_t, B> act(ctx_, nu);
+    std::size_t na2 = par::copy_if(ctx_, nx, act.data(), nu, [=] GDEL_HD(tid_t t) { return t >= 0; });
+    act.resize(na2);
+    active_ = std::move(act);
+    if (with_log) log_iters_.push_back(static_cast<std::int64_t>(log_.size()));
+    else log_.clear();
+    return true;
+  }
+
+  // --- relocation of uninserted points through the flip DAG --------------------------
+  void relocate_through_dag() {
+    const std::int64_t nrec = static_cast<std::int64_t>(log_.size());
+    if (nrec == 0) return;
+    grow_aux();
+    std::int64_t* next = aux_next_.data();
+    FlipRec* rec = log_.data();
+    log_next_.resize(static_cast<std::size_t>(3 * nrec));
+    std::int64_t* rn = log_next_.data();
+    // backwards: outputs point at the next flip consuming their slot (or ~slot)
+    for (std::size_t it = log_iters_.size() - 1; it > 0; --it) {
+      const std::int64_t lo = log_iters_[it - 1], hi = log_iters_[it];
+      par::parallel_for(ctx_, hi - lo, [=] GDEL_HD(std::int64_t k) {
+        const std::int64_t f = lo + k;
+        const FlipRec& r = rec[f];
+        for (int o = 0; o < 3; ++o) {
+          if (r.out[o] < 0) {
+            rn[3 * f + o] = -1;
+            continue;
+          }
+          const std::int64_t nf = next[r.out[o]];
+          rn[3 * f + o] = nf >= 0 ? nf : ~std::int64_t(r.out[o]);
+        }
+        for (int o = 0; o < 3; ++o)
+          if (r.in[o] >= 0) next[r.in[o]] = f;
+      });
+    }
+    const vid_t* U = todo_.data();
+    const std::int64_t u = static_cast<std::int64_t>(todo_.size());
+    tid_t* vt = vert_tet_.data();
+    const Geo g = geo();
+    auto walk = [=] GDEL_HD(std::int64_t i, double* work, bool exact) -> bool {
+      const vid_t q = U[i];
+      std::int64_t node = next[vt[q]];
+      if (node < 0) return true;
+      while (node >= 0) {
+        int c = exact ? dag_child<true>(g, rec[node], q, work) : dag_child<false>(g, rec[node], q, work);
+        if (c < 0) return false;
+        node = rn[3 * node + c];
+      }
+      vt[q] = static_cast<tid_t>(~node);
+      return true;
+    };
+    Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
+    st_.exact_evaluations += fast_then_exact(
+        ctx_, u, und.data(), [=] GDEL_HD(std::int64_t i) { return walk(i, nullptr, false); },
+        [=] GDEL_HD(std::int64_t i, double* work) { walk(i, work, true); });
+    // reset next[] for the consumed slots
+    par::parallel_for(ctx_, nrec, [=] GDEL_HD(std::int64_t f) {
+      for (int o = 0; o < 3; ++o)
+        if (rec[f].in[o] >= 0) next[rec[f].in[o]] = -1;
+    });
+    log_.clear();
+    log_iters_.assign(1, 0);
+  }
+
+  Context<B>& ctx_;
+  Buffer<double, B>& xyz_;
+  Buffer<std::int64_t, B>& sid_;
+  std::int64_t n_;
+  FlipConfig cfg_;
+  Stats& st_;
+  mesh::TetMesh<B> mesh_;
+  Buffer<tid_t, B> vert_tet_;  // per point: tet holding it while uninserted, -1 once inserted
+  Buffer<vid_t, B> todo_;      // uninserted points
+  Buffer<tid_t, B> active_{ctx_};
+  Buffer<std::uint64_t, B> aux_best_;
+  Buffer<std::int32_t, B> aux_split_;
+  Buffer<std::int32_t, B> aux_vote_;
+  Buffer<std::int32_t, B> aux_mark_;
+  Buffer<std::int64_t, B> aux_next_;
+  Buffer<fid_t, B> msg_;
+  Buffer<FlipRec, B> log_;
+  Buffer<std::int64_t, B> log_next_;
+  std::vector<std::int64_t> log_iters_{0};
+  double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0;
+  bool debug_ = false;
+  double inv_scale_ = 1.0;
+};
+
+}  // namespace gdel::flip

@@ -1,0 +1,253 @@
+// The generic evaluator behind every exact predicate and every simulation-of-simplicity
+// minor: the sign of a "lifted orientation" determinant
+//
+//        | q_0  1 |
+//   det  | ...  1 |      q_i = selected coordinates of the lifted point i,
+//        | q_k  1 |            lifted point = (x, y, z, h),  h = x^2 + y^2 + z^2 - w,
+//
+// with k = number of selected columns (1..4) and k+1 rows. Columns are selected by a mask
+// (bit 0 x, bit 1 y, bit 2 z, bit 3 h) and always appear in the order x, y, z, h, ones.
+//   k = 3, columns xyz   : the raw orientation determinant, = -orient3d (conventions.hpp)
+//   k = 4, columns xyzh  : the raw lifted determinant,     = -insphere / -power
+//   k = 1..3 with h      : the lifted orient1/2/3 minors of the SoS tables
+//   k = 1, 2 without h   : coordinate differences and orient2d on a coordinate pair
+//
+// Exact stage: Laplace expansion along the last selected column, recursively, on the
+// *untranslated* coordinates (translating would turn every entry into a two-component
+// difference and multiply the expansion lengths by 2^degree). Entries are exact: a
+// coordinate is one double, h is the exact expansion of x^2 + y^2 + z^2 - w (at most 7
+// components). Expansion lengths (k = number of columns, m = length of the entries of the
+// column expanded at that level; only the outermost column can be h):
+//   len(1, m) = 2m                     (q_0 - q_1)
+//   len(k, m) = (k+1) * 2m * len(k-1, 1)
+//   => orient1 2, orient2 12, orient3 96; lifted orient1 14, lifted orient2 84,
+//      lifted orient3 672; insphere (m = 6) 5760; power (m = 7) 6720.
+// Work (doubles, result included):
+//   work(1, 1) = 2, work(1, m > 1) = 4m
+//   work(k, m) = len(k, m) + max(work(k-1, 1), 3 len(k-1, 1) + [m > 1] m)
+//   => orient3 132, lifted orient3 715, insphere 6054, power 7015.
+//
+// Filter stage (generic, used for the SoS minors; the three main predicates have their own
+// tuned filters in filters.hpp): subtract the last row from the others, which leaves the
+// k x k determinant of differences D_ij = q_ij - q_kj; evaluate it by the same Laplace
+// expansion, with the permanent alongside. See filters.hpp for the error analysis.
+#pragma once
+
+#include <cstdint>
+
+#include "core/macros.hpp"
+#include "geometry/expansion.hpp"
+#include "geometry/filter_bounds.hpp"
+#include "geometry/fp.hpp"
+
+namespace gdel::geom {
+
+inline constexpr int kUncertain = 2;  // returned by filters when the sign is not certain
+
+// Column mask bits.
+inline constexpr unsigned kColX = 1u, kColY = 2u, kColZ = 4u, kColH = 8u;
+
+namespace detail {
+
+// Up to five lifted points: coordinates and weights (h = |p|^2 - w).
+struct LiftedRows {
+  const double* p[5];
+  double w[5];
+};
+
+// --- compile-time length / work bounds -------------------------------------------------
+GDEL_HD constexpr int lift_len(bool weighted) { return weighted ? 7 : 6; }
+// (Iterative, not recursive: these are also evaluated at run time in device code, where a
+// recursive call would need a dynamically sized stack.)
+GDEL_HD constexpr int det_len(int k, int m) {  // len(k, m) = m * 2 * prod_{j=2..k} 2 (j + 1)
+  int len = 2;
+  for (int j = 2; j <= k; ++j) len *= 2 * (j + 1);
+  return m * len;
+}
+GDEL_HD constexpr int cmax(int a, int b) { return a > b ? a : b; }
+GDEL_HD constexpr int det_work(int k, int m) {
+  int work = 2;  // work(1, 1); the inner levels always have m = 1
+  for (int j = 2; j <= k; ++j) {
+    const int mj = j == k ? m : 1;
+    work = det_len(j, mj) + cmax(work, 3 * det_len(j - 1, 1) + (mj > 1 ? mj : 0));
+  }
+  return k == 1 && m > 1 ? 4 * m : work;
+}
+static_assert(det_len(3, 1) == 96 && det_len(4, 6) == 5760 && det_len(4, 7) == 6720);
+static_assert(det_work(3, 1) == 132 && det_work(3, 7) == 715 && det_work(4, 7) == 7015);
+
+// Exact h = x^2 + y^2 + z^2 - w of point r into h[0..7); returns the length.
+GDEL_HD inline int lift_exact(const LiftedRows& R, int r, double* h) {
+  const double* p = R.p[r];
+  double a[2], b[2], c[2], t[4];
+  ex::two_product(p[0], p[0], a[1], a[0]);
+  ex::two_product(p[1], p[1], b[1], b[0]);
+  ex::two_product(p[2], p[2], c[1], c[0]);
+  const int la = ex::store2(a[0], a[1], a);
+  const int lb = ex::store2(b[0], b[1], b);
+  const int lc = ex::store2(c[0], c[1], c);
+  const int lt = ex::sum(la, a, lb, b, t);
+  int lh = ex::sum(lt, t, lc, c, h);
+  if (R.w[r] != 0.0) {
+    const double mw = -R.w[r];
+    double s[7];
+    for (int k = 0; k < lh; ++k) s[k] = h[k];
+    lh = ex::sum(lh, s, 1, &mw, h);
+  }
+  return lh;
+}
+
+// Exact determinant det[[q_rows[i], 1]] over the columns cols[0..K) (ascending, h only
+// last). Result in buf[0, len); needs det_work(K, m) doubles at buf.
+template <int K>
+GDEL_HD int det_ones_exact(const LiftedRows& R, const int* rows, const int* cols, bool weighted,
+                           double* buf) {
+  const int c = cols[K - 1];
+  if constexpr (K == 1) {
+    if (c != 3) {
+      double x, y;
+      ex::two_diff(R.p[rows[0]][c], R.p[rows[1]][c], x, y);
+      return ex::store2(y, x, buf);
+    } else {
+      const int m = lift_len(weighted);
+      double* h0 = buf + 2 * m;
+      double* h1 = h0 + m;
+      const int l0 = lift_exact(R, rows[0], h0);
+      const int l1 = lift_exact(R, rows[1], h1);
+      ex::negate(l1, h1);
+      return ex::sum(l0, h0, l1, h1, buf);
+    }
+  } else {
+    const int m = c == 3 ? lift_len(weighted) : 1;
+    const int cap = det_len(K, m);
+    constexpr int sub_cap = det_len(K - 1, 1);
+    double* sub = buf + cap;
+    double* tmp = sub + sub_cap;
+    double* hb = tmp + 2 * sub_cap;
+    ex::Accumulator acc(buf, cap);
+    for (int i = 0; i <= K; ++i) {
+      int sub_rows[K];
+      for (int t = 0, u = 0; t <= K; ++t)
+        if (t != i) sub_rows[u++] = rows[t];
+      const int sl = det_ones_exact<K - 1>(R, sub_rows, cols, weighted, sub);
+      if (sl == 0) continue;
+      // Cofactor sign of entry (i, K-1) in the (K+1)x(K+1) matrix (ones column last).
+      const double sgn = ((i + K - 1) & 1) ? -1.0 : 1.0;
+      if (c != 3) {
+        const double v = R.p[rows[i]][c];
+        acc.add(ex::scale(sl, sub, sgn * v, tmp), tmp);
+      } else {
+        const int hl = lift_exact(R, rows[i], hb);
+        for (int j = 0; j < hl; ++j) acc.add(ex::scale(sl, sub, sgn * hb[j], tmp), tmp);
+      }
+    }
+    return acc.finish();
+  }
+}
+
+// FP value and rounding-error-free "absolute" value of h (see filters.hpp for counts):
+//   h  = ((x*x + y*y) + z*z) - w,   ha = ((x*x + y*y) + z*z) + |w|.
+GDEL_HD GDEL_FORCEINLINE void lift_fp(const double* p, double w, double& h, double& ha) {
+  const double s = fp::add(fp::add(fp::mul(p[0], p[0]), fp::mul(p[1], p[1])), fp::mul(p[2], p[2]));
+  h = fp::sub(s, w);
+  ha = fp::add(s, fp::abs(w));
+}
+
+// Generic filter for det[[q_rows[i], 1]], K = 1..3 columns; -1/+1 or kUncertain.
+// Rounding counts N (see filter_bounds.hpp): the entries D_ij = q_ij - q_Kj carry 1
+// rounding for a coordinate column, 5 for the h column (4 inside h, 1 for the difference);
+// a 2x2 determinant adds a product and a subtraction; the 3x3 Laplace step adds a product
+// and two additions. N = e0 (K=1); e0+e1+2 (K=2); e0+e1+2 + e2+3 (K=3).
+template <int K>
+GDEL_HD int det_ones_filter(const LiftedRows& R, const int* rows, const int* cols) {
+  double d[3][3], a[3][3];
+  int n_round[3];
+  for (int j = 0; j < K; ++j) {
+    const int c = cols[j];
+    const int last = rows[K];
+    if (c != 3) {
+      n_round[j] = 1;
+      for (int i = 0; i < K; ++i) {
+        d[i][j] = fp::sub(R.p[rows[i]][c], R.p[last][c]);
+        a[i][j] = fp::abs(d[i][j]);
+      }
+    } else {
+      n_round[j] = 5;
+      double hl, hal;
+      lift_fp(R.p[last], R.w[last], hl, hal);
+      for (int i = 0; i < K; ++i) {
+        double h, ha;
+        lift_fp(R.p[rows[i]], R.w[rows[i]], h, ha);
+        d[i][j] = fp::sub(h, hl);
+        a[i][j] = fp::add(ha, hal);
+      }
+    }
+  }
+  double det, perm;
+  int n;
+  if constexpr (K == 1) {
+    det = d[0][0];
+    perm = a[0][0];
+    n = n_round[0];
+  } else if constexpr (K == 2) {
+    det = fp::sub(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
+    perm = fp::add(fp::mul(a[0][0], a[1][1]), fp::mul(a[1][0], a[0][1]));
+    n = n_round[0] + n_round[1] + 2;
+  } else {
+    // Laplace along column 2: + d02*m(1,2) - d12*m(0,2) + d22*m(0,1).
+    const double m12 = fp::sub(fp::mul(d[1][0], d[2][1]), fp::mul(d[2][0], d[1][1]));
+    const double m02 = fp::sub(fp::mul(d[0][0], d[2][1]), fp::mul(d[2][0], d[0][1]));
+    const double m01 = fp::sub(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
+    const double p12 = fp::add(fp::mul(a[1][0], a[2][1]), fp::mul(a[2][0], a[1][1]));
+    const double p02 = fp::add(fp::mul(a[0][0], a[2][1]), fp::mul(a[2][0], a[0][1]));
+    const double p01 = fp::add(fp::mul(a[0][0], a[1][1]), fp::mul(a[1][0], a[0][1]));
+    det = fp::add(fp::sub(fp::mul(d[0][2], m12), fp::mul(d[1][2], m02)), fp::mul(d[2][2], m01));
+    perm = fp::add(fp::add(fp::mul(a[0][2], p12), fp::mul(a[1][2], p02)), fp::mul(a[2][2], p01));
+    n = n_round[0] + n_round[1] + 2 + n_round[2] + 3;
+  }
+  if (!(perm >= bounds::kMinorThreshold && perm <= bounds::kMaxFinite)) return kUncertain;
+  const double err = fp::mul(bounds::coefficient(n), perm);
+  if (det > err) return 1;
+  if (-det > err) return -1;
+  return kUncertain;
+}
+
+// Filter then exact for K = 1..3 columns. Work: det_work(K, m) doubles.
+template <int K>
+GDEL_HD int det_ones_sign(const LiftedRows& R, const int* rows, const int* cols, bool weighted,
+                          double* work) {
+  if constexpr (K == 1) {
+    if (cols[0] != 3) {  // a coordinate difference: compare exactly
+      const double u = R.p[rows[0]][cols[0]], v = R.p[rows[1]][cols[0]];
+      return (u > v) - (u < v);
+    }
+  }
+  const int f = det_ones_filter<K>(R, rows, cols);
+  if (f != kUncertain) return f;
+  const int len = det_ones_exact<K>(R, rows, cols, weighted, work);
+  return ex::sign(len, work);
+}
+
+// Decodes a column mask into ascending column ids; returns the count.
+GDEL_HD GDEL_FORCEINLINE int mask_columns(unsigned mask, int* cols) {
+  int k = 0;
+  for (int c = 0; c < 4; ++c)
+    if (mask & (1u << c)) cols[k++] = c;
+  return k;
+}
+
+// Sign of the minor with rows `rows` (k+1 of them) and columns `mask` (k = 1..3 bits).
+GDEL_HD inline int minor_sign(const LiftedRows& R, const int* rows, unsigned mask, bool weighted,
+                              double* work) {
+  int cols[4];
+  const int k = mask_columns(mask, cols);
+  switch (k) {
+    case 1: return det_ones_sign<1>(R, rows, cols, weighted, work);
+    case 2: return det_ones_sign<2>(R, rows, cols, weighted, work);
+    case 3: return det_ones_sign<3>(R, rows, cols, weighted, work);
+    default: return 0;  // not reached: callers pass 1..3 columns
+  }
+}
+
+}  // namespace detail
+}  // namespace gdel::geom

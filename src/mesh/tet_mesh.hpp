@@ -1,0 +1,253 @@
+// Tetrahedral mesh in structure-of-arrays form on a backend, for the flipping and
+// repair stages. See mesh/conventions.hpp for the combinatorial conventions.
+//
+//   tet[t]    4 vertex ids (internal ids; kInfinite for the point at infinity)
+//   opp[4t+i] packed facet (t' << 2 | i') of the neighbour across face i, or -1;
+//             64-bit so tet-face counts may pass 2^31
+//   state[t]  TetState bits (alive, changed, ...)
+//   fflag[4t+i] per-face FaceFlag bits (one byte per face, so that threads owning
+//             different faces of a tet never share a word)
+//
+// Slots: a tet slot is alive or free. Free slots sit on a stack. Allocation and
+// release are deterministic (so the same input gives the same slots, hence the same
+// triangulation, on every run and backend): the host reserves k slots at once with
+// TetMesh::claim(k), which returns a SlotSource mapping claim number j in [0, k) to
+// a slot; slots are returned with TetMesh::release(list, k) in list order.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/conventions.hpp"
+#include "parallel/atomic.hpp"
+#include "parallel/primitives.hpp"
+
+namespace gdel::mesh {
+
+struct alignas(16) Tet {
+  vid_t v[4];
+};
+
+enum TetState : std::uint8_t {
+  kAlive = 1,
+  kChanged = 2,   // created or modified since last checked: its faces need checking
+  kEmpty = 4,     // holds no uninserted point (gFlip3D)
+};
+
+enum FaceFlag : std::uint8_t {
+  kInternal = 1,    // created inside a split/flip: known locally Delaunay
+  kSpecial = 2,     // filter could not decide: redo with exact predicates
+  kSphereFail = 4,  // seen not locally Delaunay
+};
+
+// Plain pointers for use inside kernels (trivially copyable).
+struct MeshView {
+  Tet* tet;
+  fid_t* opp;
+  std::uint8_t* state;
+  std::uint8_t* fflag;
+
+  GDEL_HD bool alive(tid_t t) const { return (state[t] & kAlive) != 0; }
+  GDEL_HD std::uint8_t face_flags(tid_t t, int i) const { return fflag[4 * std::int64_t(t) + i]; }
+  GDEL_HD void set_face_flags(tid_t t, int i, std::uint8_t f) const { fflag[4 * std::int64_t(t) + i] = f; }
+  GDEL_HD void link(tid_t t, int i, tid_t u, int j) const {
+    opp[4 * std::int64_t(t) + i] = pack_facet(u, j);
+    opp[4 * std::int64_t(u) + j] = pack_facet(t, i);
+  }
+};
+
+// Claim j of a batch of k: the top of the free stack first, then fresh slots past
+// the high-water mark.
+struct SlotSource {
+  const tid_t* stack;
+  std::int64_t top;         // free-stack size before the claim
+  std::int64_t from_stack;  // min(k, top)
+  std::int64_t size0;       // high-water mark before the claim
+  GDEL_HD tid_t slot(std::int64_t j) const {
+    return j < from_stack ? stack[top - 1 - j] : static_cast<tid_t>(size0 + (j - from_stack));
+  }
+};
+
+template <class B>
+class TetMesh {
+ public:
+  explicit TetMesh(par::Context<B>& ctx)
+      : ctx_(&ctx), tet_(ctx), opp_(ctx), state_(ctx), fflag_(ctx), free_(ctx) {}
+
+  par::Context<B>& context() { return *ctx_; }
+  std::int64_t capacity() const { return static_cast<std::int64_t>(tet_.size()); }
+
+  std::int64_t size() const { return size_; }
+  std::int64_t free_count() const { return free_count_; }
+  std::int64_t alive_count() {
+    const std::uint8_t* st = state_.data();
+    par::Buffer<std::int64_t, B> a(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
+    std::int64_t* ap = a.data();
+    std::int64_t n = size();
+    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) { ap[t] = (st[t] & kAlive) ? 1 : 0; });
+    return par::reduce_sum(*ctx_, ap, static_cast<std::size_t>(n));
+  }
+
+  // Capacity for at least n slots; contents kept; new slots are free and dead.
+  void reserve(std::int64_t n) {
+    std::int64_t old = capacity();
+    if (n <= old) return;
+    std::int64_t cap = std::max<std::int64_t>(n, old + old / 2);
+    tet_.resize(static_cast<std::size_t>(cap));
+    opp_.resize(static_cast<std::size_t>(4 * cap));
+    state_.resize(static_cast<std::size_t>(cap));
+    fflag_.resize(static_cast<std::size_t>(4 * cap));
+    free_.resize(static_cast<std::size_t>(cap));
+    std::uint8_t* st = state_.data();
+    par::parallel_for(*ctx_, cap - old, [=] GDEL_HD(std::int64_t k) { st[old + k] = 0; });
+  }
+
+  // Reserves k slots (growing the arrays if needed) and returns their source. The
+  // claimed slots are dead until the caller fills them.
+  SlotSource claim(std::int64_t k) {
+    const std::int64_t from_stack = std::min(k, free_count_);
+    const std::int64_t fresh = k - from_stack;
+    if (size_ + fresh > capacity()) reserve(size_ + fresh);
+    SlotSource src{free_.data(), free_count_, from_stack, size_};
+    free_count_ -= from_stack;
+    size_ += fresh;
+    return src;
+  }
+  // Marks the k slots of `slots` dead and pushes them on the free stack, in order.
+  void release(const tid_t* slots, std::int64_t k) {
+    if (k <= 0) return;
+    tid_t* st = free_.data();
+    std::uint8_t* state = state_.data();
+    const std::int64_t top = free_count_;
+    par::parallel_for(*ctx_, k, [=] GDEL_HD(std::int64_t j) {
+      state[slots[j]] = 0;
+      st[top + j] = slots[j];
+    });
+    free_count_ += k;
+  }
+
+  MeshView view() {
+    return MeshView{tet_.data(), opp_.data(), state_.data(), fflag_.data()};
+  }
+
+  // Moves alive tets to [0, alive) keeping their order, remaps neighbour references;
+  // returns old->new map (-1 for dead slots). Free stack emptied.
+  par::Buffer<tid_t, B> compact() {
+    std::int64_t n = size();
+    par::Buffer<tid_t, B> remap(*ctx_, static_cast<std::size_t>(n + 1));
+    tid_t* rm = remap.data();
+    const std::uint8_t* st = state_.data();
+    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) { rm[t] = (st[t] & kAlive) ? 1 : 0; });
+    tid_t alive = par::counts_to_offsets(*ctx_, rm, static_cast<std::size_t>(n));
+    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
+      if (!(st[t] & kAlive)) rm[t] = -1;
+    });
+    par::Buffer<Tet, B> t2(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
+    par::Buffer<fid_t, B> o2(*ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(capacity(), 1)));
+    par::Buffer<std::uint8_t, B> s2(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
+    par::Buffer<std::uint8_t, B> f2(*ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(capacity(), 1)));
+    Tet* tp = t2.data();
+    fid_t* op = o2.data();
+    std::uint8_t* sp = s2.data();
+    std::uint8_t* fp = f2.data();
+    MeshView v = view();
+    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
+      tid_t d = rm[t];
+      if (d < 0) return;
+      tp[d] = v.tet[t];
+      sp[d] = v.state[t];
+      for (int i = 0; i < 4; ++i) {
+        fp[4 * std::int64_t(d) + i] = v.fflag[4 * t + i];
+        fid_t o = v.opp[4 * t + i];
+        op[4 * std::int64_t(d) + i] = o < 0 ? o : pack_facet(rm[facet_tet(o)], facet_face(o));
+      }
+    });
+    std::int64_t cap = capacity();
+    par::parallel_for(*ctx_, cap - alive, [=] GDEL_HD(std::int64_t k) { sp[alive + k] = 0; });
+    tet_ = std::move(t2);
+    opp_ = std::move(o2);
+    state_ = std::move(s2);
+    fflag_ = std::move(f2);
+    size_ = alive;
+    free_count_ = 0;
+    return remap;
+  }
+
+  par::Buffer<Tet, B>& tets() { return tet_; }
+  par::Buffer<fid_t, B>& opp() { return opp_; }
+  par::Buffer<std::uint8_t, B>& state() { return state_; }
+  par::Buffer<std::uint8_t, B>& face_flags() { return fflag_; }
+  // Sets the high-water mark (slots [0, size) in use) and empties the free stack
+  // (e.g. after building tets directly).
+  void set_size(std::int64_t size) {
+    reserve(size);
+    size_ = size;
+    free_count_ = 0;
+  }
+
+ private:
+  par::Context<B>* ctx_;
+  par::Buffer<Tet, B> tet_;
+  par::Buffer<fid_t, B> opp_;
+  par::Buffer<std::uint8_t, B> state_;
+  par::Buffer<std::uint8_t, B> fflag_;
+  par::Buffer<tid_t, B> free_;
+  std::int64_t size_ = 0;        // high-water mark of used slots
+  std::int64_t free_count_ = 0;  // entries on the free stack
+};
+
+// Result of the invariant checker: empty when everything holds.
+struct MeshProblems {
+  std::vector<std::string> items;
+  bool ok() const { return items.empty(); }
+};
+
+// Structural invariants, checked on a host copy (debug / validate level 1):
+// every alive tet has 4 distinct vertex ids in range (or kInfinite), each neighbour
+// reference points to an alive tet whose reference points back, and the two tets
+// share exactly the 3 vertices of the face. Geometric checks are the verifier's.
+template <class B>
+MeshProblems check_invariants(TetMesh<B>& m, std::int64_t num_points, std::size_t max_report = 20) {
+  MeshProblems p;
+  std::int64_t n = m.size();
+  auto tet = m.tets().to_host();
+  auto opp = m.opp().to_host();
+  auto st = m.state().to_host();
+  auto add = [&](const std::string& s) {
+    if (p.items.size() < max_report) p.items.push_back(s);
+  };
+  for (std::int64_t t = 0; t < n; ++t) {
+    if (!(st[t] & kAlive)) continue;
+    const Tet& a = tet[t];
+    for (int i = 0; i < 4; ++i) {
+      vid_t v = a.v[i];
+      if (v != kInfinite && (v < 0 || v >= num_points)) add("tet " + std::to_string(t) + ": vertex id out of range");
+      for (int j = 0; j < i; ++j)
+        if (a.v[j] == v) add("tet " + std::to_string(t) + ": repeated vertex");
+      fid_t o = opp[4 * t + i];
+      if (o < 0) continue;
+      tid_t u = facet_tet(o);
+      int j = facet_face(o);
+      if (u < 0 || u >= n || !(st[u] & kAlive)) {
+        add("tet " + std::to_string(t) + " face " + std::to_string(i) + ": neighbour dead or out of range");
+        continue;
+      }
+      if (opp[4 * std::int64_t(u) + j] != pack_facet(static_cast<tid_t>(t), i))
+        add("tet " + std::to_string(t) + " face " + std::to_string(i) + ": adjacency not symmetric (points to " +
+            std::to_string(u) + "/" + std::to_string(j) + " which points to " +
+            std::to_string(facet_tet(opp[4 * std::int64_t(u) + j])) + "/" +
+            std::to_string(facet_face(opp[4 * std::int64_t(u) + j])) + ")");
+      int shared = 0;
+      for (int k = 0; k < 3; ++k) {
+        vid_t w = a.v[face_vertex(i, k)];
+        for (int l = 0; l < 3; ++l) shared += (tet[u].v[face_vertex(j, l)] == w);
+      }
+      if (shared != 3) add("tet " + std::to_string(t) + " face " + std::to_string(i) + ": neighbour's face differs");
+      if (tet[u].v[j] == a.v[i]) add("tet " + std::to_string(t) + " face " + std::to_string(i) + ": same apex both sides");
+    }
+  }
+  return p;
+}
+
+}  // namespace gdel::mesh

@@ -1,0 +1,83 @@
+// The fast-kernel / exact-kernel split (ALGORITHMS.md §1.3) as one reusable step.
+//
+// two_stage_signs(ctx, n, out, filter, exact, work_doubles):
+//   pass 1 (all items, full occupancy): out[i] = filter(i), a sign in {-1,0,1} or
+//          kUndecided when the floating-point filter cannot certify it;
+//   compaction of the undecided items;
+//   pass 2 (only those): out[i] = exact(i, work) with `work` a private scratch of
+//          work_doubles doubles for expansion arithmetic.
+// On the GPU pass 2 runs with a bounded number of threads, each owning a slice of a
+// global-memory scratch (exact expansions are far too long for registers), grid-
+// striding over the list; on the CPU each OpenMP thread uses a heap scratch.
+// Returns the number of items that needed the exact pass (synchronizes).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "parallel/primitives.hpp"
+
+namespace gdel::par {
+
+inline constexpr std::int8_t kUndecided = 2;
+
+// Runs f(k, work) for k in [0, n) with a private scratch of work_doubles doubles.
+template <class F>
+void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f) {
+  if (n <= 0) return;
+#pragma omp parallel
+  {
+    std::vector<double> work(work_doubles);
+#pragma omp for schedule(dynamic, 64)
+    for (std::int64_t k = 0; k < n; ++k) f(k, work.data());
+  }
+}
+
+#if defined(__CUDACC__)
+namespace detail {
+template <class F>
+__global__ void scratch_kernel(std::int64_t n, double* scratch, std::size_t work_doubles, F f) {
+  const std::int64_t tid = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x;
+  const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
+  double* work = scratch + tid * work_doubles;
+  for (std::int64_t k = tid; k < n; k += stride) f(k, work);
+}
+}  // namespace detail
+
+// Threads for exact passes: enough to keep the SMs busy with divergent, memory-
+// heavy work, few enough that the scratch stays small (slices of work_doubles).
+inline std::int64_t exact_threads(const Context<Cuda>& c, std::int64_t n) {
+  std::int64_t cap = std::int64_t(c.sm_count()) * 128;
+  return n < cap ? n : cap;
+}
+
+template <class F>
+void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f) {
+  if (n <= 0) return;
+  const int block = 64;
+  std::int64_t threads = (exact_threads(c, n) + block - 1) / block * block;
+  Buffer<double, Cuda> scratch(c, static_cast<std::size_t>(threads) * work_doubles);
+  detail::scratch_kernel<<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(n, scratch.data(),
+                                                                                          work_doubles, f);
+  GDEL_CUDA_CHECK_LAUNCH("for_each_with_scratch");
+}
+#endif
+
+template <class B, class Filter, class Exact>
+std::int64_t two_stage_signs(Context<B>& ctx, std::int64_t n, std::int8_t* out, Filter filter, Exact exact,
+                             std::size_t work_doubles) {
+  if (n <= 0) return 0;
+  parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) { out[i] = filter(i); });
+  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(n));
+  std::int64_t m = static_cast<std::int64_t>(
+      select_indices(ctx, static_cast<std::size_t>(n), list.data(),
+                     [=] GDEL_HD(std::int64_t i) { return out[i] == kUndecided; }));
+  const std::int64_t* lp = list.data();
+  for_each_with_scratch(ctx, m, work_doubles, [=] GDEL_HD(std::int64_t k, double* work) {
+    std::int64_t i = lp[k];
+    out[i] = exact(i, work);
+  });
+  return m;
+}
+
+}  // namespace gdel::par

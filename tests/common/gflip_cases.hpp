@@ -1,0 +1,114 @@
+// gFlip3D cases shared by the CPU and GPU test programs: every generator gives a
+// valid triangulation of the convex hull of all distinct points (only the local
+// Delaunay check may report facets; flat tets are allowed before the repair stage
+// and are reported), degenerate inputs give clear errors.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gdel/delaunay.hpp"
+#include "gdel/errors.hpp"
+#include "gdel/verify.hpp"
+#include "gen/generators.hpp"
+
+namespace gdel::test {
+
+// terminal: the InsAll variant (for study) may end with flipping stuck on the hull,
+// leaving reflex hull edges for the repair stage; everything else must hold.
+inline void expect_flip_output_valid(const std::vector<double>& pts, const Triangulation& t, Backend b,
+                                     bool terminal = false) {
+  auto r = verify(pts, t.tets, {}, b);
+  SCOPED_TRACE(r.summary());
+  SCOPED_TRACE(t.stats.to_string());
+  EXPECT_EQ(r.bad_index, 0);
+  EXPECT_EQ(r.inverted_tets, 0);
+  EXPECT_EQ(r.overshared_facets, 0);
+  EXPECT_EQ(r.same_side_facets, 0);
+  EXPECT_EQ(r.hull_open_edges, 0);
+  if (!terminal) EXPECT_EQ(r.hull_reflex_edges, 0);
+  EXPECT_EQ(r.unused_points, 0);
+  EXPECT_EQ(r.duplicate_vertices, 0);
+  EXPECT_EQ(r.euler, 1);
+  // neighbours are consistent with the tets
+  const std::size_t m = t.tets.size() / 4;
+  ASSERT_EQ(t.neighbors.size(), 4 * m);
+  std::size_t hull = 0;
+  for (std::size_t i = 0; i < m; ++i)
+    for (int f = 0; f < 4; ++f) {
+      const std::int32_t o = t.neighbors[4 * i + f];
+      if (o < 0) {
+        ++hull;
+        continue;
+      }
+      ASSERT_LT(static_cast<std::size_t>(o), m);
+      int back = 0;
+      for (int g = 0; g < 4; ++g) back += t.neighbors[4 * o + g] == static_cast<std::int32_t>(i);
+      EXPECT_EQ(back, 1);
+    }
+  EXPECT_EQ(static_cast<std::int64_t>(hull), r.hull_facets);
+  // failed vertices cover every non-locally-Delaunay facet
+  if (r.non_delaunay_facets > 0) EXPECT_GT(t.failed_vertices.size(), 0u);
+}
+
+inline void gflip_generator_cases(Backend b, std::size_t n) {
+  using gen::Distribution;
+  for (Distribution d : {Distribution::Uniform, Distribution::Gaussian, Distribution::ThinShell, Distribution::Grid,
+                         Distribution::Sphere, Distribution::Ball, Distribution::SkewLines}) {
+    SCOPED_TRACE(std::string(gen::to_string(d)));
+    const std::size_t nn = d == Distribution::SkewLines ? std::min<std::size_t>(n / 10, 2000) : n;
+    auto pts = gen::generate(d, nn, 1234);
+    Options o;
+    o.algorithm = Algorithm::gflip3d;
+    o.backend = b;
+    Triangulation t = delaunay(pts, o);
+    expect_flip_output_valid(pts, t, b);
+    EXPECT_GT(t.stats.rounds, 0);
+    // terminal variant (InsAll) too
+    o.terminal_flipping = true;
+    Triangulation t2 = delaunay(pts, o);
+    expect_flip_output_valid(pts, t2, b, /*terminal=*/true);
+  }
+}
+
+inline void gflip_degenerate_cases(Backend b) {
+  Options o;
+  o.algorithm = Algorithm::gflip3d;
+  o.backend = b;
+  // fewer than 4 distinct points
+  std::vector<double> three = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0};
+  EXPECT_THROW(delaunay(three, o), DegenerateInput);
+  // coplanar
+  std::vector<double> plane;
+  for (int i = 0; i < 50; ++i) plane.insert(plane.end(), {double(i % 7), double(i / 7), 3.0});
+  EXPECT_THROW(delaunay(plane, o), DegenerateInput);
+  // collinear
+  std::vector<double> line;
+  for (int i = 0; i < 20; ++i) line.insert(line.end(), {double(i), 2.0 * i, -1.0 * i});
+  EXPECT_THROW(delaunay(line, o), DegenerateInput);
+  // NaN
+  std::vector<double> bad = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, NAN};
+  EXPECT_THROW(delaunay(bad, o), InvalidInput);
+  // duplicates: each appears once, representative maps to the smallest index
+  auto pts = gen::uniform(500, 3);
+  for (int i = 0; i < 20; ++i) pts.insert(pts.end(), {pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]});
+  Triangulation t = delaunay(pts, o);
+  expect_flip_output_valid(pts, t, b);
+  EXPECT_EQ(t.stats.distinct_points, 500);
+  for (int i = 0; i < 20; ++i) EXPECT_EQ(t.representative[500 + i], i);
+  // a cube's corners + centre (cospherical, symmetric) and the octahedral 9-point set
+  std::vector<double> cube;
+  for (int i = 0; i < 8; ++i) cube.insert(cube.end(), {double(i & 1), double((i >> 1) & 1), double(i >> 2)});
+  cube.insert(cube.end(), {0.5, 0.5, 0.5});
+  expect_flip_output_valid(cube, delaunay(cube, o), b);
+  // huge and tiny magnitudes (scaled exactly into the predicate range)
+  auto big = gen::uniform(300, 9);
+  for (double& x : big) x *= 1e100;
+  expect_flip_output_valid(big, delaunay(big, o), b);
+  auto tiny = gen::uniform(300, 10);
+  for (double& x : tiny) x *= 1e-100;
+  expect_flip_output_valid(tiny, delaunay(tiny, o), b);
+}
+
+}  // namespace gdel::test

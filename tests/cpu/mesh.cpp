@@ -1,0 +1,5 @@
+#include "common/mesh_cases.hpp"
+TEST(MeshCpu, SlotsAdjacencyCompaction) {
+  gdel::par::Context<gdel::par::Cpu> ctx;
+  gdel::test::tet_mesh_cases(ctx);
+}

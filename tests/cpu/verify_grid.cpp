@@ -1,0 +1,2 @@
+#include "common/verify_grid_cases.hpp"
+TEST(VerifyCpu, KuhnGridAndCorruptions) { gdel::test::kuhn_grid_cases(gdel::Backend::Cpu); }

@@ -1,0 +1,5 @@
+#include "common/mesh_cases.hpp"
+TEST(MeshGpu, SlotsAdjacencyCompaction) {
+  gdel::par::Context<gdel::par::Cuda> ctx;
+  gdel::test::tet_mesh_cases(ctx);
+}

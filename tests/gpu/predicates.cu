@@ -1,0 +1,214 @@
+// GPU tests of src/geometry: the same predicates evaluated in a kernel (grid-stride loop,
+// each thread's exact work buffer a slice of kPredicateWork doubles of global scratch),
+// compared on the host with GMP and with the host implementation; plus the contraction
+// regression on the device (nvcc fuses a*b+c by default; our code must not be affected).
+#include <cuda_runtime.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "cpu/predicates_oracle.hpp"
+#include "geometry/predicates.hpp"
+
+using namespace gdel::geom;
+using gdel_test::Case;
+using gdel_test::Generator;
+using gdel_test::Oracle;
+
+#define CUDA_OK(call)                                                                  \
+  do {                                                                                 \
+    const cudaError_t err_ = (call);                                                   \
+    ASSERT_EQ(err_, cudaSuccess) << #call << ": " << cudaGetErrorString(err_);         \
+  } while (0)
+
+namespace {
+
+constexpr int kMasks = 14;  // column masks 1..14 (1..3 columns)
+
+struct Result {
+  int o3, o3x, o3s;
+  int in, inx, ins, inl;
+  int pw, pwx, pws, pwl;
+  int minor[kMasks];
+  int minor_exact[kMasks];
+};
+
+GDEL_HD void evaluate(const Case& k, Result& r, double* work) {
+  const double *a = k.p[0], *b = k.p[1], *c = k.p[2], *d = k.p[3], *e = k.p[4];
+  const double* w = k.w;
+  const std::int64_t* id = k.id;
+  r.o3 = orient3d(a, b, c, d, work);
+  r.o3x = orient3d_exact(a, b, c, d, work);
+  r.o3s = orient3d_sos(a, b, c, d, id[0], id[1], id[2], id[3], work);
+  r.in = insphere(a, b, c, d, e, work);
+  r.inx = insphere_exact(a, b, c, d, e, work);
+  r.ins = insphere_sos(a, b, c, d, e, id[0], id[1], id[2], id[3], id[4], work);
+  r.inl = insphere_lift_sos(a, b, c, d, e, id[0], id[1], id[2], id[3], id[4], work);
+  r.pw = power(a, b, c, d, e, w[0], w[1], w[2], w[3], w[4], work);
+  r.pwx = power_exact(a, b, c, d, e, w[0], w[1], w[2], w[3], w[4], work);
+  r.pws = power_sos(a, b, c, d, e, w[0], w[1], w[2], w[3], w[4], id[0], id[1], id[2], id[3], id[4], work);
+  r.pwl = power_lift_sos(a, b, c, d, e, w[0], w[1], w[2], w[3], w[4], id[0], id[1], id[2], id[3],
+                         id[4], work);
+  const double* pts[5] = {a, b, c, d, e};
+  for (int m = 0; m < kMasks; ++m) {
+    r.minor[m] = lifted_minor(pts, w, static_cast<unsigned>(m + 1), work);
+    r.minor_exact[m] = lifted_minor_exact(pts, w, static_cast<unsigned>(m + 1), work);
+  }
+}
+
+__global__ void evaluate_kernel(const Case* cases, int n, Result* out, double* scratch) {
+  const int tid = blockIdx.x * blockDim.x + threadIdx.x;
+  double* work = scratch + static_cast<std::size_t>(tid) * kPredicateWork;
+  for (int i = tid; i < n; i += gridDim.x * blockDim.x) evaluate(cases[i], out[i], work);
+}
+
+// Contraction regression on the device: two_product of given pairs, and orient3d of a
+// configuration whose exact determinant is 0 while its FMA-evaluated one is not.
+__global__ void contraction_kernel(const double* ab, int n, double* xy, const double* pts,
+                                   int* o3, double* fused, double* scratch) {
+  const int tid = blockIdx.x * blockDim.x + threadIdx.x;
+  for (int i = tid; i < n; i += gridDim.x * blockDim.x) {
+    ex::two_product(ab[2 * i], ab[2 * i + 1], xy[2 * i], xy[2 * i + 1]);
+  }
+  if (tid == 0) {
+    const double *a = pts, *b = pts + 3, *c = pts + 6, *d = pts + 9;
+    o3[0] = orient3d(a, b, c, d, scratch);
+    o3[1] = orient3d_exact(a, b, c, d, scratch);
+    o3[2] = orient3d_filter(a, b, c, d);
+    // What default nvcc code generation (--fmad=true) makes of vx*wy - vy*wx: one FMA.
+    const double vx = b[0] - a[0], vy = b[1] - a[1], wx = c[0] - a[0], wy = c[1] - a[1];
+    fused[0] = fma(vx, wy, -(vy * wx));
+  }
+}
+
+bool have_device() {
+  int n = 0;
+  return cudaGetDeviceCount(&n) == cudaSuccess && n > 0;
+}
+
+template <class T>
+struct DeviceBuffer {
+  T* ptr = nullptr;
+  ~DeviceBuffer() {
+    if (ptr) cudaFree(ptr);
+  }
+};
+
+}  // namespace
+
+TEST(GpuPredicates, MatchGmpAndHost) {
+  if (!have_device()) GTEST_SKIP() << "no CUDA device";
+  // GDEL_GPU_PREDICATE_CASES overrides the number of cases of each kind (debugging).
+  const char* env = std::getenv("GDEL_GPU_PREDICATE_CASES");
+  const int n_each = env ? std::atoi(env) : (1 << 18);
+  const int n_random = n_each, n_degenerate = n_each;
+  std::vector<Case> cases;
+  cases.reserve(n_random + n_degenerate);
+  Generator g(20240601);
+  for (int i = 0; i < n_random; ++i) {
+    const int sel = i % 16;
+    cases.push_back(g.random(sel == 0 ? 0x1p198 : sel == 1 ? 0x1p-120 : 1.0));
+  }
+  for (int i = 0; i < n_degenerate; ++i) cases.push_back(g.degenerate(i));
+  const int n = static_cast<int>(cases.size());
+
+  const int blocks = 64, threads = 64;  // few threads: exact work is register-hungry
+  DeviceBuffer<Case> d_cases;
+  DeviceBuffer<Result> d_out;
+  DeviceBuffer<double> d_scratch;
+  CUDA_OK(cudaMalloc(&d_cases.ptr, sizeof(Case) * n));
+  CUDA_OK(cudaMalloc(&d_out.ptr, sizeof(Result) * n));
+  CUDA_OK(cudaMalloc(&d_scratch.ptr, sizeof(double) * kPredicateWork * blocks * threads));
+  CUDA_OK(cudaMemcpy(d_cases.ptr, cases.data(), sizeof(Case) * n, cudaMemcpyHostToDevice));
+  const auto t0 = std::chrono::steady_clock::now();
+  evaluate_kernel<<<blocks, threads>>>(d_cases.ptr, n, d_out.ptr, d_scratch.ptr);
+  CUDA_OK(cudaGetLastError());
+  CUDA_OK(cudaDeviceSynchronize());
+  const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<Result> out(n);
+  CUDA_OK(cudaMemcpy(out.data(), d_out.ptr, sizeof(Result) * n, cudaMemcpyDeviceToHost));
+
+  Oracle o;
+  std::vector<double> work(kPredicateWork);
+  long bad = 0, zero_sos = 0, brute = 0;
+  auto fail = [&](int i, const char* what) {
+    if (++bad <= 20) ADD_FAILURE() << what << " case " << i;
+  };
+  for (int i = 0; i < n; ++i) {
+    const Case& k = cases[i];
+    const Result& r = out[i];
+    Result h;
+    evaluate(k, h, work.data());  // host implementation: identical signs expected
+    if (std::memcmp(&h, &r, sizeof(Result)) != 0) fail(i, "device != host");
+    o.load(k, 4, false);
+    const int x3 = o.orient3d();
+    if (r.o3 != x3 || r.o3x != x3) fail(i, "orient3d");
+    o.load(k, 5, false);
+    const int xi = o.lifted();
+    if (r.in != xi || r.inx != xi) fail(i, "insphere");
+    if (xi == 0 && i % 8 == 0) {
+      ++brute;
+      if (r.inl != o.lift_sos(k.id)) fail(i, "insphere_lift_sos brute force");
+      if (r.ins != o.em_sos(5, k.id)) fail(i, "insphere_sos brute force");
+    }
+    o.load(k, 5, true);
+    const int xp = o.lifted();
+    if (r.pw != xp || r.pwx != xp) fail(i, "power");
+    for (int m = 0; m < kMasks; ++m) {
+      const int xm = o.minor(static_cast<unsigned>(m + 1));
+      if (r.minor[m] != xm || r.minor_exact[m] != xm) fail(i, "minor");
+    }
+    if (x3 == 0 && i % 8 == 0 && r.o3s != o.em_sos(4, k.id)) fail(i, "orient3d_sos brute force");
+    zero_sos += r.o3s == 0 || r.ins == 0 || r.inl == 0 || r.pws == 0 || r.pwl == 0;
+    if ((x3 && r.o3s != x3) || (xi && (r.ins != xi || r.inl != xi)) || (xp && (r.pws != xp || r.pwl != xp)))
+      fail(i, "sos disagrees with a non-zero exact sign");
+  }
+  std::printf("[gpu] %d cases (%d random, %d degenerate) in %.2f s on the device; %ld brute-force "
+              "SoS checks\n", n, n_random, n_degenerate, sec, brute);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(zero_sos, 0);
+}
+
+TEST(GpuPredicates, NoContractionOnDevice) {
+  if (!have_device()) GTEST_SKIP() << "no CUDA device";
+  Generator g(99);
+  const int n = 1 << 16;
+  std::vector<double> ab(2 * n);
+  for (int i = 0; i < n; ++i) {
+    ab[2 * i] = std::ldexp(g.uniform(0.5, 1.0), g.integer(-200, 200)) * ((i & 1) ? -1 : 1);
+    ab[2 * i + 1] = std::ldexp(g.uniform(0.5, 1.0), g.integer(-200, 200));
+  }
+  const double pts[12] = {0.0, 0.0, 0.0, 0.1, 0.7, 0.0, 0.2, 1.4, 0.0, 0.0, 0.0, 1.0};
+  DeviceBuffer<double> d_ab, d_xy, d_pts, d_fused, d_scratch;
+  DeviceBuffer<int> d_o3;
+  CUDA_OK(cudaMalloc(&d_ab.ptr, sizeof(double) * 2 * n));
+  CUDA_OK(cudaMalloc(&d_xy.ptr, sizeof(double) * 2 * n));
+  CUDA_OK(cudaMalloc(&d_pts.ptr, sizeof(pts)));
+  CUDA_OK(cudaMalloc(&d_fused.ptr, sizeof(double)));
+  CUDA_OK(cudaMalloc(&d_o3.ptr, 3 * sizeof(int)));
+  CUDA_OK(cudaMalloc(&d_scratch.ptr, sizeof(double) * kPredicateWork));
+  CUDA_OK(cudaMemcpy(d_ab.ptr, ab.data(), sizeof(double) * 2 * n, cudaMemcpyHostToDevice));
+  CUDA_OK(cudaMemcpy(d_pts.ptr, pts, sizeof(pts), cudaMemcpyHostToDevice));
+  contraction_kernel<<<64, 128>>>(d_ab.ptr, n, d_xy.ptr, d_pts.ptr, d_o3.ptr, d_fused.ptr, d_scratch.ptr);
+  CUDA_OK(cudaGetLastError());
+  CUDA_OK(cudaDeviceSynchronize());
+  std::vector<double> xy(2 * n);
+  int o3[3];
+  double fused;
+  CUDA_OK(cudaMemcpy(xy.data(), d_xy.ptr, sizeof(double) * 2 * n, cudaMemcpyDeviceToHost));
+  CUDA_OK(cudaMemcpy(o3, d_o3.ptr, sizeof(o3), cudaMemcpyDeviceToHost));
+  CUDA_OK(cudaMemcpy(&fused, d_fused.ptr, sizeof(double), cudaMemcpyDeviceToHost));
+  for (int i = 0; i < n; ++i) {
+    const double a = ab[2 * i], b = ab[2 * i + 1];
+    ASSERT_EQ(xy[2 * i], a * b) << a << " " << b;
+    ASSERT_EQ(xy[2 * i + 1], std::fma(a, b, -(a * b))) << a << " " << b;
+  }
+  EXPECT_NE(fused, 0.0);  // the fused expression is not exactly zero ...
+  EXPECT_EQ(o3[0], 0);    // ... while orient3d is
+  EXPECT_EQ(o3[1], 0);
+  EXPECT_EQ(o3[2], kUncertain);
+}

@@ -1,0 +1,2 @@
+#include "common/verify_grid_cases.hpp"
+TEST(VerifyGpu, KuhnGridAndCorruptionsMatchCpu) { gdel::test::kuhn_grid_cases(gdel::Backend::Cuda); }
