@@ -197,6 +197,48 @@ GDEL_HD int order_32(const Geo& g, FlipRec& r, vid_t nv[3][4], double* work) {
   return 0;
 }
 
+// True iff the 3 vertices f are all among the 4 of t.
+GDEL_HD inline bool has_face(const vid_t* t, const vid_t* f) {
+  int h = 0;
+  for (int q = 0; q < 3; ++q)
+    for (int z = 0; z < 4; ++z) h += (t[z] == f[q]);
+  return h == 3;
+}
+// Local index of the vertex of t that is not in face f (t must hold f).
+GDEL_HD inline int opposite_of_face(const vid_t* t, const vid_t* f) {
+  int l = 0;
+  for (int z = 0; z < 4; ++z) {
+    bool in = false;
+    for (int q = 0; q < 3; ++q) in = in || t[z] == f[q];
+    if (!in) l = z;
+  }
+  return l;
+}
+
+// Builds the record of accepted flip f (proposer A[flp[f]]); false if undecided.
+struct BuildFlipRecord {
+  MeshView m;
+  Geo g;
+  const tid_t* A;
+  const std::int64_t* flp;
+  const std::int32_t* pp;
+  FlipRec* rec;
+  template <bool Exact>
+  GDEL_HD bool run(std::int64_t f, double* work) const {
+    const tid_t b = A[flp[f]];
+    const int p = pp[flp[f]];
+    FlipRec r;
+    vid_t nv[3][4];
+    flip_outputs(m, g, b, p, r, nv, work);
+    if (r.type == 2 && order_32<Exact>(g, r, nv, work) == kUndecidedResult) return false;
+    tid_t ts[3];
+    const int nt = prop_tets(m, b, p, ts);
+    for (int l = 0; l < 3; ++l) r.in[l] = l < nt ? ts[l] : -1;
+    rec[f] = r;
+    return true;
+  }
+};
+
 // Which output of flip record r contains q: 0..2, or kUndecidedResult.
 template <bool Exact>
 GDEL_HD int dag_child(const Geo& g, const FlipRec& r, vid_t q, double* work) {

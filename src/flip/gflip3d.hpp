@@ -55,6 +55,7 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
+        active_(ctx),
         aux_best_(ctx), aux_split_(ctx), aux_vote_(ctx), aux_mark_(ctx), aux_next_(ctx), msg_(ctx), log_(ctx),
         log_next_(ctx) {}
 
@@ -116,7 +117,8 @@ class GFlip3D {
   vid_t infinite() const { return static_cast<vid_t>(n_); }
   Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_)}; }
 
- private:
+ // (The steps below are public only because nvcc's extended __host__ __device__ lambdas
+ // may not live in private member functions; they are not an interface.)
   static double since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   }
@@ -537,7 +539,7 @@ class GFlip3D {
     // proposers
     Buffer<std::int64_t, B> pl(ctx_, static_cast<std::size_t>(na));
     std::int64_t* plp = pl.data();
-    const std::int64_t np = static_cast<std::int64_t>(par::select_indices(
+    std::int64_t np = static_cast<std::int64_t>(par::select_indices(
         ctx_, static_cast<std::size_t>(na), plp, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
     if (np == 0) return false;
     // vote: the smallest proposer index wins each tet; accepted flips are disjoint
@@ -566,7 +568,9 @@ class GFlip3D {
     });
     Buffer<std::int64_t, B> fl(ctx_, static_cast<std::size_t>(np));
     std::int64_t* flp = fl.data();
-    const std::int64_t nfl = static_cast<std::int64_t>(
+    // (not const: nvcc 13.0 crashes, "i_copy_expr_tree", on a const local whose
+    // initializer contains an extended lambda once it is used in a constant context)
+    std::int64_t nfl = static_cast<std::int64_t>(
         par::select_indices(ctx_, static_cast<std::size_t>(np), flp, [=] GDEL_HD(std::int64_t j) { return ap[j] != 0; }));
     // flips' proposer positions in A
     par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { flp[f] = plp[flp[f]]; });
@@ -631,27 +635,10 @@ class GFlip3D {
     Buffer<std::int8_t, B> und2(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(nfl, 1)));
     // flip kernel: (a) build records and new tets' vertices (3-2 ordering may need
     // exact orientation); (b) write. Pass (a) is split fast/exact.
-    Buffer<std::int8_t, B> tmp(ctx_, 1);
-    auto build = [=] GDEL_HD(std::int64_t f, double* work, bool exact) -> bool {
-      const tid_t b = A[flp[f]];
-      const int p = pp[flp[f]];
-      FlipRec r;
-      vid_t nv[3][4];
-      int nn = flip_outputs(m, g, b, p, r, nv, work);
-      if (r.type == 2) {
-        int s = exact ? order_32<true>(g, r, nv, work) : order_32<false>(g, r, nv, work);
-        if (s == kUndecidedResult) return false;
-      }
-      (void)nn;
-      tid_t ts[3];
-      int nt = prop_tets(m, b, p, ts);
-      for (int l = 0; l < 3; ++l) r.in[l] = l < nt ? ts[l] : -1;
-      rec[f] = r;
-      return true;
-    };
+    const BuildFlipRecord bfr{m, g, A, flp, pp, rec};
     st_.exact_evaluations += fast_then_exact(
-        ctx_, nfl, und2.data(), [=] GDEL_HD(std::int64_t f) { return build(f, nullptr, false); },
-        [=] GDEL_HD(std::int64_t f, double* work) { build(f, work, true); });
+        ctx_, nfl, und2.data(), [=] GDEL_HD(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
+        [=] GDEL_HD(std::int64_t f, double* work) { bfr.template run<true>(f, work); });
     // (b) slots, vertices, internal links, external messages
     par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
       FlipRec& r = rec[f];
@@ -670,8 +657,14 @@ class GFlip3D {
         r.out[2] = src.slot(o23[f]);
       } else {
         nn = 2;
-        nv[0][0] = r.v[0], nv[0][1] = r.v[1], nv[0][2] = r.v[2], nv[0][3] = r.v[3];
-        nv[1][0] = r.v[1], nv[1][1] = r.v[0], nv[1][2] = r.v[2], nv[1][3] = r.v[4];
+        nv[0][0] = r.v[0];
+        nv[0][1] = r.v[1];
+        nv[0][2] = r.v[2];
+        nv[0][3] = r.v[3];
+        nv[1][0] = r.v[1];
+        nv[1][1] = r.v[0];
+        nv[1][2] = r.v[2];
+        nv[1][3] = r.v[4];
         r.out[0] = r.in[0];
         r.out[1] = r.in[1];
         r.out[2] = -1;
@@ -696,36 +689,19 @@ class GFlip3D {
           int c = 0;
           for (int q = 0; q < 4; ++q)
             if (q != l) fvx[c++] = nv[a][q];
-          auto has = [&](const vid_t* t4) {
-            int h = 0;
-            for (int q = 0; q < 3; ++q)
-              for (int z = 0; z < 4; ++z) h += (t4[z] == fvx[q]);
-            return h == 3;
-          };
           // internal: another new tet holds the face
           int other = -1;
           for (int a2 = 0; a2 < nn && other < 0; ++a2)
-            if (a2 != a && has(nv[a2])) other = a2;
+            if (a2 != a && has_face(nv[a2], fvx)) other = a2;
           if (other >= 0) {
-            int l2 = 0;
-            for (int z = 0; z < 4; ++z) {
-              bool in = false;
-              for (int q = 0; q < 3; ++q) in = in || nv[other][z] == fvx[q];
-              if (!in) l2 = z;
-            }
-            m.opp[4 * std::int64_t(sa) + l] = pack_facet(r.out[other], l2);
+            m.opp[4 * std::int64_t(sa) + l] = pack_facet(r.out[other], opposite_of_face(nv[other], fvx));
             m.set_face_flags(sa, l, mesh::kInternal);
             continue;
           }
           // external: the old tet that held it
           for (int o = 0; o < no; ++o) {
-            if (!has(ov[o])) continue;
-            int lo = 0;
-            for (int z = 0; z < 4; ++z) {
-              bool in = false;
-              for (int q = 0; q < 3; ++q) in = in || ov[o][z] == fvx[q];
-              if (!in) lo = z;
-            }
+            if (!has_face(ov[o], fvx)) continue;
+            const int lo = opposite_of_face(ov[o], fvx);
             msg[4 * std::int64_t(r.in[o]) + lo] = pack_facet(sa, l);
             en[6 * f + ne] = pack_facet(sa, l);
             eo[6 * f + ne] = oopp[o][lo];
@@ -836,6 +812,7 @@ class GFlip3D {
     log_iters_.assign(1, 0);
   }
 
+ private:
   Context<B>& ctx_;
   Buffer<double, B>& xyz_;
   Buffer<std::int64_t, B>& sid_;
@@ -845,7 +822,7 @@ class GFlip3D {
   mesh::TetMesh<B> mesh_;
   Buffer<tid_t, B> vert_tet_;  // per point: tet holding it while uninserted, -1 once inserted
   Buffer<vid_t, B> todo_;      // uninserted points
-  Buffer<tid_t, B> active_{ctx_};
+  Buffer<tid_t, B> active_;
   Buffer<std::uint64_t, B> aux_best_;
   Buffer<std::int32_t, B> aux_split_;
   Buffer<std::int32_t, B> aux_vote_;
