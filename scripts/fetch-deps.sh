@@ -25,4 +25,5 @@ if [ ! -f .deps/cli11/include/CLI/CLI.hpp ]; then
   [ -f /usr/include/CLI/CLI.hpp ] || apt-get install -y libcli11-dev >/dev/null
   mkdir -p .deps/cli11/include && cp -r /usr/include/CLI .deps/cli11/include/
 fi
+bash scripts/fetch-models.sh >/dev/null
 du -sh .deps/* 

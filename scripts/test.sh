@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
+bash scripts/fetch-models.sh >/dev/null  # real scanned models used by the tests (.deps/models)
 jobs=$(nproc)
 cmake --preset cpu >/dev/null
 cmake --build --preset cpu -j "$jobs"

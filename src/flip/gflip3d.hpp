@@ -30,6 +30,7 @@ struct FlipConfig {
   InsertionRule rule = InsertionRule::Circumcenter;
   bool terminal = false;
   std::int64_t max_flip_iterations = 1 << 20;  // per flip loop; a safety net, never reached in practice
+  bool tail_rule = std::getenv("GDEL_FLIP_EVERY_ROUND") == nullptr;  // study knob (ALGORITHMS.md §3.1)
 };
 
 // Runs pass 1 (fast) on n items; items for which fast(i) returns false are
@@ -94,7 +95,7 @@ class GFlip3D {
         }
         // Tail rule (ALGORITHMS.md §3.1): the last tiny rounds are not worth a flip
         // loop each; insert them by splitting and flip once at the end.
-        if (remaining < inserted && inserted < n_ / 10) {
+        if (cfg_.tail_rule && remaining < inserted && inserted < n_ / 10) {
           flipping = false;
           flipped_all_along = false;
         }

@@ -1,0 +1,203 @@
+// gdel-bench: times gdel's algorithms and the peers available in this build (CGAL
+// sequential and parallel) in one process, on the same points, checks every gdel
+// output with the exact verifier, prints a table and writes JSON.
+//
+//   gdel-bench [--dist uniform,gaussian,...] [--n 100000,1000000] [--methods LIST]
+//              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify]
+//   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
+//   methods: gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
+//            cgal, cgal-par   (default: all available)
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gdel/delaunay.hpp"
+#include "gdel/verify.hpp"
+#include "gen/generators.hpp"
+#include "io/io.hpp"
+#include "peers.hpp"
+
+namespace {
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+struct Row {
+  std::string dist, method;
+  std::size_t n = 0;
+  double median_s = 0, min_s = 0;
+  std::int64_t tets = 0, flips = 0, failed = 0, non_ld = -1, flat = -1, rounds = 0, iterations = 0, peak = 0;
+  double nonld_fraction = -1;
+  double flips_per_s = 0;  // flips / time spent in flipping stages
+  bool valid = true;
+  std::string stages;
+  std::string note;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> dists = {"uniform", "gaussian", "thin_shell", "grid", "sphere", "ball"};
+  std::vector<std::size_t> sizes = {100000, 1000000};
+  std::vector<std::string> methods;
+  int repeat = 3;
+  std::size_t cpu_max = 1000000;
+  std::string json;
+  bool do_verify = true;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "gdel-bench: %s needs a value\n", a.c_str());
+        std::exit(1);
+      }
+      return argv[++i];
+    };
+    if (a == "--dist") dists = split(next());
+    else if (a == "--n") {
+      sizes.clear();
+      for (auto& s : split(next())) sizes.push_back(static_cast<std::size_t>(std::stod(s)));
+    } else if (a == "--methods") methods = split(next());
+    else if (a == "--repeat") repeat = std::max(1, std::atoi(next().c_str()));
+    else if (a == "--cpu-max") cpu_max = static_cast<std::size_t>(std::stod(next()));
+    else if (a == "--json") json = next();
+    else if (a == "--no-verify") do_verify = false;
+    else {
+      std::fprintf(stderr, "gdel-bench: unknown argument %s\n", a.c_str());
+      return 1;
+    }
+  }
+  const bool have_cuda = gdel::cuda_device_available();
+  if (methods.empty()) {
+    if (have_cuda) methods = {"gflip3d-cuda", "gflip3d-terminal-cuda"};
+    methods.push_back("gflip3d-cpu");
+    if (gdel::bench::cgal_built()) {
+      methods.push_back("cgal");
+      methods.push_back("cgal-par");
+    }
+  }
+  // warm-up (CUDA context, pools)
+  if (have_cuda) {
+    gdel::Options o;
+    o.backend = gdel::Backend::Cuda;
+    o.algorithm = gdel::Algorithm::gflip3d;
+    gdel::delaunay(gdel::gen::uniform(10000, 1), o);
+  }
+  std::vector<Row> rows;
+  for (auto& dn : dists) {
+    const bool is_file = dn.find('.') != std::string::npos;
+    const std::vector<double> file_pts = is_file ? gdel::io::read_points(dn).xyz : std::vector<double>{};
+    for (std::size_t n0 : sizes) {
+      const auto pts = is_file ? file_pts : gdel::gen::generate(gdel::gen::parse_distribution(dn), n0, 20261122);
+      const std::size_t n = pts.size() / 3;
+      if (is_file && n0 != sizes.front()) break;
+      for (auto& m : methods) {
+        Row r;
+        r.dist = dn;
+        r.method = m;
+        r.n = n;
+        std::vector<double> times;
+        if (m.rfind("gflip3d", 0) == 0) {
+          gdel::Options o;
+          o.algorithm = gdel::Algorithm::gflip3d;
+          o.terminal_flipping = m.find("terminal") != std::string::npos;
+          o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
+          if (o.backend == gdel::Backend::Cuda && !have_cuda) continue;
+          if (o.backend == gdel::Backend::Cpu && n > cpu_max) continue;
+          gdel::Triangulation t;
+          for (int k = 0; k < repeat; ++k) {
+            t = gdel::delaunay(pts, o);
+            times.push_back(t.stats.seconds);
+          }
+          r.tets = t.num_tets();
+          r.flips = t.stats.flips23 + t.stats.flips32;
+          r.failed = t.stats.failed_vertices;
+          r.rounds = t.stats.rounds;
+          r.iterations = t.stats.flip_iterations;
+          r.peak = t.stats.peak_bytes;
+          std::ostringstream st;
+          double flip_s = 0;
+          for (auto& [name, s] : t.stats.stages) {
+            st << name << "=" << s << ";";
+            if (name.find("flipping") != std::string::npos) flip_s += s;
+          }
+          r.flips_per_s = flip_s > 0 ? double(r.flips) / flip_s : 0;
+          r.stages = st.str();
+          if (do_verify) {
+            auto v = gdel::verify(pts, t.tets, {}, have_cuda ? gdel::Backend::Cuda : gdel::Backend::Cpu);
+            r.non_ld = v.non_delaunay_facets;
+            r.flat = v.degenerate_tets;
+            r.nonld_fraction = v.facets ? double(v.non_delaunay_facets) / double(v.facets) : 0;
+            // validity apart from flat tets (which gFlip3D may leave for the repair stage)
+            r.valid = v.bad_index == 0 && v.inverted_tets == 0 && v.overshared_facets == 0 &&
+                      v.same_side_facets == 0 && v.hull_open_edges == 0 && v.unused_points == 0 &&
+                      v.duplicate_vertices == 0 && v.euler_ok;
+            if (v.hull_reflex_edges) r.note = "reflex hull edges " + std::to_string(v.hull_reflex_edges);
+          }
+        } else if (m == "cgal" || m == "cgal-par") {
+          gdel::bench::PeerResult p;
+          for (int k = 0; k < repeat; ++k) {
+            p = gdel::bench::cgal_delaunay(pts, m == "cgal-par");
+            if (!p.available) break;
+            times.push_back(p.seconds);
+          }
+          if (!p.available) continue;
+          r.tets = p.tets;
+        } else {
+          std::fprintf(stderr, "gdel-bench: unknown method %s\n", m.c_str());
+          return 1;
+        }
+        r.median_s = median(times);
+        r.min_s = *std::min_element(times.begin(), times.end());
+        rows.push_back(r);
+        std::fprintf(stderr, "  %-10s %9zu %-22s %9.4f s\n", dn.c_str(), n, m.c_str(), r.median_s);
+      }
+    }
+  }
+  // table: time ratios against CGAL sequential / parallel of the same row group
+  std::printf("%-10s %9s %-22s %9s %8s %8s %10s %9s %9s %9s %8s %6s %s\n", "dist", "n", "method", "median_s",
+              "xCGAL", "xCGALpar", "tets", "flips", "Mflips/s", "failedV", "nonLD", "flat", "valid");
+  for (auto& r : rows) {
+    double cg = 0, cgp = 0;
+    for (auto& q : rows)
+      if (q.dist == r.dist && q.n == r.n) {
+        if (q.method == "cgal") cg = q.median_s;
+        if (q.method == "cgal-par") cgp = q.median_s;
+      }
+    std::string dn = r.dist.substr(r.dist.find_last_of('/') + 1);
+    std::printf("%-10s %9zu %-22s %9.4f %8.2f %8.2f %10lld %9lld %9.1f %9lld %8lld %6lld %s %s\n", dn.c_str(), r.n,
+                r.method.c_str(), r.median_s, cg > 0 ? cg / r.median_s : 0.0, cgp > 0 ? cgp / r.median_s : 0.0,
+                (long long)r.tets, (long long)r.flips, r.flips_per_s / 1e6, (long long)r.failed, (long long)r.non_ld,
+                (long long)r.flat, r.valid ? "yes" : "NO", r.note.c_str());
+  }
+  if (!json.empty()) {
+    std::ofstream f(json);
+    f << "[\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      auto& r = rows[i];
+      f << "  {\"dist\": \"" << r.dist << "\", \"n\": " << r.n << ", \"method\": \"" << r.method
+        << "\", \"median_s\": " << r.median_s << ", \"min_s\": " << r.min_s << ", \"tets\": " << r.tets
+        << ", \"flips\": " << r.flips << ", \"flips_per_s\": " << r.flips_per_s << ", \"failed_vertices\": " << r.failed << ", \"non_ld_facets\": " << r.non_ld
+        << ", \"non_ld_fraction\": " << r.nonld_fraction << ", \"flat_tets\": " << r.flat
+        << ", \"rounds\": " << r.rounds << ", \"flip_iterations\": " << r.iterations << ", \"peak_bytes\": " << r.peak
+        << ", \"valid\": " << (r.valid ? "true" : "false") << ", \"stages\": \"" << r.stages << "\"}"
+        << (i + 1 < rows.size() ? "," : "") << "\n";
+    }
+    f << "]\n";
+  }
+  return 0;
+}

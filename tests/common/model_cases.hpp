@@ -1,0 +1,36 @@
+// Real scanned models (CGAL's demo data, fetched by scripts/fetch-models.sh into
+// .deps/models): gFlip3D's output must be a valid triangulation of their convex hull.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "common/gflip_cases.hpp"
+#include "io/io.hpp"
+
+namespace gdel::test {
+
+inline std::filesystem::path models_dir() {
+  if (const char* d = std::getenv("GDEL_MODELS_DIR")) return d;
+  return std::filesystem::path(GDEL_SOURCE_DIR) / ".deps" / "models";
+}
+
+inline void model_cases(Backend b) {
+  const char* names[] = {"bunny00.off", "armadillo.off", "ChineseDragon-10kv.off", "blade.off", "building.ply",
+                         "b9_training.ply"};
+  for (const char* name : names) {
+    SCOPED_TRACE(name);
+    const auto path = models_dir() / name;
+    ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing: run scripts/fetch-models.sh";
+    auto pts = io::read_points(path).xyz;
+    ASSERT_GE(pts.size(), 3000u);
+    Options o;
+    o.algorithm = Algorithm::gflip3d;
+    o.backend = b;
+    Triangulation t = delaunay(pts, o);
+    expect_flip_output_valid(pts, t, b);
+  }
+}
+
+}  // namespace gdel::test
