@@ -31,6 +31,10 @@ struct FlipConfig {
   bool terminal = false;
   std::int64_t max_flip_iterations = 1 << 20;  // per flip loop; a safety net, never reached in practice
   bool tail_rule = std::getenv("GDEL_FLIP_EVERY_ROUND") == nullptr;  // study knob (ALGORITHMS.md §3.1)
+  // Re-order tets by smallest vertex id every second round (ALGORITHMS.md §2.2): with
+  // curve-sorted points this restores spatial locality in memory. Study knob:
+  // GDEL_NO_TET_REORDER=1 turns it off.
+  bool reorder_tets = std::getenv("GDEL_NO_TET_REORDER") == nullptr;
 };
 
 // Runs pass 1 (fast) on n items; items for which fast(i) returns false are
@@ -93,6 +97,11 @@ class GFlip3D {
           relocate_through_dag();
           t_relocate_ += since(tl);
         }
+        if (remaining > 0 && cfg_.reorder_tets && st_.rounds % 2 == 0) {
+          auto to = std::chrono::steady_clock::now();
+          reorder_tets();
+          t_reorder_ += since(to);
+        }
         // Tail rule (ALGORITHMS.md §3.1): the last tiny rounds are not worth a flip
         // loop each; insert them by splitting and flip once at the end.
         if (cfg_.tail_rule && remaining < inserted && inserted < n_ / 10) {
@@ -102,6 +111,7 @@ class GFlip3D {
       }
     }
     st_.stages.push_back({"insertion (split + relocate)", t_insert_});
+    if (t_reorder_ > 0) st_.stages.push_back({"tet reordering", t_reorder_});
     if (flipped_all_along) {
       st_.stages.push_back({"flipping", t_flip_});
       st_.stages.push_back({"relocation through flip DAG", t_relocate_});
@@ -757,6 +767,26 @@ class GFlip3D {
     return true;
   }
 
+  // --- periodic re-ordering of tets ---------------------------------------------------
+  // Between rounds: no flip log and no active set are alive; only the uninserted
+  // points' tets need remapping.
+  void reorder_tets() {
+    const vid_t inf = static_cast<vid_t>(n_);
+    auto remap = mesh_.reorder([=] GDEL_HD(const mesh::Tet& t) {
+      // smallest finite vertex id; tets of ∞ sort with their smallest finite vertex
+      vid_t m = inf;
+      for (int i = 0; i < 4; ++i) m = (t.v[i] != inf && t.v[i] < m) ? t.v[i] : m;
+      return static_cast<std::uint64_t>(m);
+    });
+    const tid_t* rm = remap.data();
+    const vid_t* U = todo_.data();
+    tid_t* vt = vert_tet_.data();
+    par::parallel_for(ctx_, static_cast<std::int64_t>(todo_.size()), [=] GDEL_HD(std::int64_t i) { vt[U[i]] = rm[vt[U[i]]]; });
+    // per-tet auxiliary state is all at its reset value between rounds, except the
+    // flip stamps (aux_mark_), which only matter when equal to the current iteration
+    grow_aux();
+  }
+
   // --- relocation of uninserted points through the flip DAG --------------------------
   void relocate_through_dag() {
     const std::int64_t nrec = static_cast<std::int64_t>(log_.size());
@@ -833,7 +863,7 @@ class GFlip3D {
   Buffer<FlipRec, B> log_;
   Buffer<std::int64_t, B> log_next_;
   std::vector<std::int64_t> log_iters_{0};
-  double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0;
+  double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0, t_reorder_ = 0;
   bool debug_ = false;
   double inv_scale_ = 1.0;
 };

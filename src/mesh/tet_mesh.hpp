@@ -143,6 +143,41 @@ class TetMesh {
     par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
       if (!(st[t] & kAlive)) rm[t] = -1;
     });
+    apply_remap(rm, alive);
+    return remap;
+  }
+
+  // Moves alive tets to [0, alive) in the order of key(t) (ties: slot order), e.g.
+  // by smallest vertex id, so that tets near each other in space (points are curve
+  // sorted) are near each other in memory; returns old->new map (-1 for dead slots).
+  template <class Key>
+  par::Buffer<tid_t, B> reorder(Key key) {
+    const std::int64_t n = size();
+    par::Buffer<std::uint64_t, B> k(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(n, 1)));
+    par::Buffer<tid_t, B> ids(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(n, 1)));
+    std::uint64_t* kp = k.data();
+    tid_t* ip = ids.data();
+    MeshView v = view();
+    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
+      kp[t] = v.alive(static_cast<tid_t>(t)) ? static_cast<std::uint64_t>(key(v.tet[t])) : ~std::uint64_t(0);
+      ip[t] = static_cast<tid_t>(t);
+    });
+    par::sort_pairs(*ctx_, kp, ip, static_cast<std::size_t>(n));
+    par::Buffer<tid_t, B> remap(*ctx_, static_cast<std::size_t>(n + 1));
+    tid_t* rm = remap.data();
+    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t j) { rm[ip[j]] = kp[j] == ~std::uint64_t(0) ? -1 : tid_t(j); });
+    par::Buffer<std::int64_t, B> a(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(n, 1)));
+    std::int64_t* ap = a.data();
+    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) { ap[t] = rm[t] >= 0 ? 1 : 0; });
+    const std::int64_t alive = par::reduce_sum(*ctx_, ap, static_cast<std::size_t>(n));
+    apply_remap(rm, alive);
+    return remap;
+  }
+
+  // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
+  // remapped; slots [0, alive) are then in use and the free stack is empty.
+  void apply_remap(const tid_t* rm, std::int64_t alive) {
+    const std::int64_t n = size();
     par::Buffer<Tet, B> t2(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
     par::Buffer<fid_t, B> o2(*ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(capacity(), 1)));
     par::Buffer<std::uint8_t, B> s2(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
@@ -171,7 +206,6 @@ class TetMesh {
     fflag_ = std::move(f2);
     size_ = alive;
     free_count_ = 0;
-    return remap;
   }
 
   par::Buffer<Tet, B>& tets() { return tet_; }

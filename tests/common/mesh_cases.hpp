@@ -70,10 +70,24 @@ void tet_mesh_cases(par::Context<B>& ctx) {
     v.state[2] = 0;
     v.link(1, 3, 3, 3);  // arbitrary glue for remap test (not geometric)
   });
+  // reorder by a key (largest first vertex first): slots follow the key, links follow the slots
+  {
+    auto rmk = m.reorder([] GDEL_HD(const Tet& t) { return std::uint64_t(1000 - t.v[0]); }).to_host();
+    EXPECT_EQ(m.size(), 3);
+    EXPECT_EQ(rmk[2], -1);  // dead slot dropped
+    auto tv = m.tets().to_host();
+    EXPECT_EQ(tv[0].v[0], 9);  // keys 991 < 995 < 999
+    EXPECT_EQ(tv[1].v[0], 5);
+    EXPECT_EQ(tv[2].v[0], 1);
+    auto op = m.opp().to_host();
+    EXPECT_EQ(op[4 * 0 + 3], pack_facet(2, 3));  // old 3 <-> old 1 glued through face 3
+    EXPECT_EQ(op[4 * 2 + 3], pack_facet(0, 3));
+    // and back to slot order for the compaction checks below
+    m.reorder([] GDEL_HD(const Tet& t) { return std::uint64_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); });
+  }
   auto remap = m.compact().to_host();
   EXPECT_EQ(m.size(), 3);
-  EXPECT_EQ(remap[2], -1);
-  EXPECT_EQ(remap[3], 2);
+  EXPECT_EQ(remap[2], 2);  // already compact: identity
   auto opp = m.opp().to_host();
   EXPECT_EQ(opp[4 * 1 + 3], pack_facet(2, 3));
   EXPECT_EQ(opp[4 * 2 + 3], pack_facet(1, 3));
