@@ -115,6 +115,7 @@ int main(int argc, char** argv) {
           gdel::Options o;
           o.algorithm = gdel::Algorithm::gflip3d;
           o.terminal_flipping = m.find("terminal") != std::string::npos;
+          o.reorder_tets = std::getenv("GDEL_TET_REORDER") != nullptr;
           o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
           if (o.backend == gdel::Backend::Cuda && !have_cuda) continue;
           if (o.backend == gdel::Backend::Cpu && n > cpu_max) continue;

@@ -84,6 +84,7 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
   flip::FlipConfig cfg;
   cfg.rule = opt.insertion;
   cfg.terminal = opt.terminal_flipping;
+  cfg.reorder_tets = opt.reorder_tets;
   flip::GFlip3D<B> alg(ctx, P, sid, m, cfg, st);
   alg.run();
 

@@ -66,6 +66,10 @@ inline void gflip_generator_cases(Backend b, std::size_t n) {
     Triangulation t = delaunay(pts, o);
     expect_flip_output_valid(pts, t, b);
     EXPECT_GT(t.stats.rounds, 0);
+    // with tet re-ordering
+    o.reorder_tets = true;
+    expect_flip_output_valid(pts, delaunay(pts, o), b);
+    o.reorder_tets = false;
     // terminal variant (InsAll) too
     o.terminal_flipping = true;
     Triangulation t2 = delaunay(pts, o);
