@@ -139,46 +139,32 @@ struct FlipRec {
   tid_t out[3];
 };
 
-// New tets of a flip, from its proposal. Returns the number of new tets.
-GDEL_HD inline int flip_outputs(const MeshView& m, const Geo& g, tid_t b, int prop, FlipRec& r, vid_t nv[3][4],
-                                double* /*unused*/) {
+// Record of the flip proposed by b (type, vertices, not yet slots); a 3-2 record
+// still needs order_32.
+GDEL_HD inline void flip_outputs(const MeshView& m, tid_t b, int prop, FlipRec& r) {
   const Tet bt = m.tet[b];
   const vid_t* bv = bt.v;
   const int i = prop_face(prop);
   const vid_t x = apex_of(m, m.opp[4 * std::int64_t(b) + i]);
   r.type = prop_type(prop);
   if (r.type == 1) {
-    vid_t c[3] = {bv[face_vertex(i, 0)], bv[face_vertex(i, 1)], bv[face_vertex(i, 2)]};
-    r.v[0] = c[0];
-    r.v[1] = c[1];
-    r.v[2] = c[2];
+    for (int k = 0; k < 3; ++k) r.v[k] = bv[face_vertex(i, k)];
     r.v[3] = bv[i];
     r.v[4] = x;
-    for (int k = 0; k < 3; ++k) {
-      nv[k][0] = c[k];
-      nv[k][1] = c[(k + 1) % 3];
-      nv[k][2] = x;
-      nv[k][3] = bv[i];
-    }
-    return 3;
+    return;
   }
   const int k = prop_other(prop);
-  vid_t e[2];
-  int ne = 0;
+  int ne = 3;
   for (int l = 0; l < 4; ++l)
-    if (l != i && l != k) e[ne++] = bv[l];
-  (void)g;
+    if (l != i && l != k) r.v[ne++] = bv[l];
   r.v[0] = bv[i];
   r.v[1] = bv[k];
   r.v[2] = x;
-  r.v[3] = e[0];
-  r.v[4] = e[1];
-  return 2;
 }
 
-// Orders a 3-2 record so that (r0, r1, r2, eA) is positive; fills the 2 new tets.
+// Orders a 3-2 record so that (r0, r1, r2, eA) is positive.
 template <bool Exact>
-GDEL_HD int order_32(const Geo& g, FlipRec& r, vid_t nv[3][4], double* work) {
+GDEL_HD int order_32(const Geo& g, FlipRec& r, double* work) {
   int s = g.orient<Exact>(r.v[0], r.v[1], r.v[2], r.v[3], work);
   if (s == par::kUndecided) return kUndecidedResult;
   if (s < 0) {
@@ -186,15 +172,24 @@ GDEL_HD int order_32(const Geo& g, FlipRec& r, vid_t nv[3][4], double* work) {
     r.v[3] = r.v[4];
     r.v[4] = t;
   }
-  nv[0][0] = r.v[0];
-  nv[0][1] = r.v[1];
-  nv[0][2] = r.v[2];
-  nv[0][3] = r.v[3];
-  nv[1][0] = r.v[1];
-  nv[1][1] = r.v[0];
-  nv[1][2] = r.v[2];
-  nv[1][3] = r.v[4];
   return 0;
+}
+
+// The new tets of a complete record (see FlipRec); returns their number.
+GDEL_HD inline int flip_new_tets(const FlipRec& r, vid_t nv[3][4]) {
+  if (r.type == 1) {
+    for (int k = 0; k < 3; ++k) {
+      nv[k][0] = r.v[k];
+      nv[k][1] = r.v[(k + 1) % 3];
+      nv[k][2] = r.v[4];
+      nv[k][3] = r.v[3];
+    }
+    return 3;
+  }
+  const int order[2][4] = {{0, 1, 2, 3}, {1, 0, 2, 4}};
+  for (int a = 0; a < 2; ++a)
+    for (int l = 0; l < 4; ++l) nv[a][l] = r.v[order[a][l]];
+  return 2;
 }
 
 // True iff the 3 vertices f are all among the 4 of t.
@@ -228,9 +223,8 @@ struct BuildFlipRecord {
     const tid_t b = A[flp[f]];
     const int p = pp[flp[f]];
     FlipRec r;
-    vid_t nv[3][4];
-    flip_outputs(m, g, b, p, r, nv, work);
-    if (r.type == 2 && order_32<Exact>(g, r, nv, work) == kUndecidedResult) return false;
+    flip_outputs(m, b, p, r);
+    if (r.type == 2 && order_32<Exact>(g, r, work) == kUndecidedResult) return false;
     tid_t ts[3];
     const int nt = prop_tets(m, b, p, ts);
     for (int l = 0; l < 3; ++l) r.in[l] = l < nt ? ts[l] : -1;

@@ -654,32 +654,10 @@ class GFlip3D {
     par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
       FlipRec& r = rec[f];
       vid_t nv[3][4];
-      int nn;
-      if (r.type == 1) {
-        nn = 3;
-        for (int k = 0; k < 3; ++k) {
-          nv[k][0] = r.v[k];
-          nv[k][1] = r.v[(k + 1) % 3];
-          nv[k][2] = r.v[4];
-          nv[k][3] = r.v[3];
-        }
-        r.out[0] = r.in[0];
-        r.out[1] = r.in[1];
-        r.out[2] = src.slot(o23[f]);
-      } else {
-        nn = 2;
-        nv[0][0] = r.v[0];
-        nv[0][1] = r.v[1];
-        nv[0][2] = r.v[2];
-        nv[0][3] = r.v[3];
-        nv[1][0] = r.v[1];
-        nv[1][1] = r.v[0];
-        nv[1][2] = r.v[2];
-        nv[1][3] = r.v[4];
-        r.out[0] = r.in[0];
-        r.out[1] = r.in[1];
-        r.out[2] = -1;
-      }
+      const int nn = flip_new_tets(r, nv);
+      r.out[0] = r.in[0];
+      r.out[1] = r.in[1];
+      r.out[2] = r.type == 1 ? src.slot(o23[f]) : -1;
       const int no = r.type == 1 ? 2 : 3;
       // old tets (read before any slot is overwritten)
       vid_t ov[3][4];
