@@ -37,19 +37,10 @@ struct FlipConfig {
   bool reorder_tets = false;
 };
 
-// Runs pass 1 (fast) on n items; items for which fast(i) returns false are
-// collected and run through exact(i, work) with scratch. Returns the exact count.
+// The fast/exact split of the parallel layer with the predicates' scratch size.
 template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact) {
-  if (n <= 0) return 0;
-  par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
-  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(n));
-  std::int64_t* lp = list.data();
-  std::int64_t m = static_cast<std::int64_t>(par::select_indices(
-      ctx, static_cast<std::size_t>(n), lp, [=] GDEL_HD(std::int64_t i) { return undecided[i] != 0; }));
-  par::for_each_with_scratch(ctx, m, geom::kPredicateWork,
-                             [=] GDEL_HD(std::int64_t k, double* work) { exact(lp[k], work); });
-  return m;
+  return par::fast_then_exact(ctx, n, undecided, fast, exact, geom::kPredicateWork);
 }
 
 template <class B>

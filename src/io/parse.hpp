@@ -30,7 +30,8 @@ inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c ==
 
 // Strict parsers: the whole token must be a number. A leading '+' is accepted. Doubles
 // accept "nan", "inf", "infinity" in any case, with a sign. Out-of-range values fail.
-inline bool parse_double(std::string_view tok, double& out) {
+template <class Number>
+bool parse_number(std::string_view tok, Number& out) {
   if (!tok.empty() && tok.front() == '+') {
     tok.remove_prefix(1);
     if (tok.empty() || tok.front() == '+' || tok.front() == '-') return false;
@@ -39,16 +40,10 @@ inline bool parse_double(std::string_view tok, double& out) {
   const auto res = std::from_chars(tok.data(), end, out);
   return res.ec == std::errc() && res.ptr == end && !tok.empty();
 }
-
+inline bool parse_double(std::string_view tok, double& out) { return parse_number(tok, out); }
 template <class Int>
 bool parse_int(std::string_view tok, Int& out) {
-  if (!tok.empty() && tok.front() == '+') {
-    tok.remove_prefix(1);
-    if (tok.empty() || tok.front() == '+' || tok.front() == '-') return false;
-  }
-  const char* end = tok.data() + tok.size();
-  const auto res = std::from_chars(tok.data(), end, out);
-  return res.ec == std::errc() && res.ptr == end && !tok.empty();
+  return parse_number(tok, out);
 }
 
 // Iterates over the lines of a text, numbering them from 1, with '\r' (CRLF files) and,

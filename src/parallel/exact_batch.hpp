@@ -1,11 +1,12 @@
 // The fast-kernel / exact-kernel split (ALGORITHMS.md §1.3) as one reusable step.
 //
-// two_stage_signs(ctx, n, out, filter, exact, work_doubles):
-//   pass 1 (all items, full occupancy): out[i] = filter(i), a sign in {-1,0,1} or
-//          kUndecided when the floating-point filter cannot certify it;
+// fast_then_exact(ctx, n, undecided, fast, exact, work_doubles):
+//   pass 1 (all items, full occupancy): fast(i), false when the floating-point
+//          filters could not decide item i;
 //   compaction of the undecided items;
-//   pass 2 (only those): out[i] = exact(i, work) with `work` a private scratch of
+//   pass 2 (only those): exact(i, work) with `work` a private scratch of
 //          work_doubles doubles for expansion arithmetic.
+// two_stage_signs is the same for a sign per item.
 // On the GPU pass 2 runs with a bounded number of threads, each owning a slice of a
 // global-memory scratch (exact expansions are far too long for registers), grid-
 // striding over the list; on the CPU each OpenMP thread uses a heap scratch.
@@ -63,21 +64,37 @@ void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_do
 }
 #endif
 
+// Runs fast(i) on all n items (full occupancy); the items for which it returns false
+// (undecided) are compacted and run through exact(i, work) with a private scratch of
+// work_doubles doubles. `undecided` is caller scratch of n bytes. Returns the number
+// of items that needed the exact pass (synchronizes).
+template <class B, class Fast, class Exact>
+std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
+                             std::size_t work_doubles) {
+  if (n <= 0) return 0;
+  parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
+  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(n));
+  std::int64_t* lp = list.data();
+  std::int64_t m = static_cast<std::int64_t>(select_indices(
+      ctx, static_cast<std::size_t>(n), lp, [=] GDEL_HD(std::int64_t i) { return undecided[i] != 0; }));
+  for_each_with_scratch(ctx, m, work_doubles, [=] GDEL_HD(std::int64_t k, double* work) { exact(lp[k], work); });
+  return m;
+}
+
+// Signs: out[i] = filter(i) (a sign, or kUndecided), then exact(i, work) for the
+// undecided items.
 template <class B, class Filter, class Exact>
 std::int64_t two_stage_signs(Context<B>& ctx, std::int64_t n, std::int8_t* out, Filter filter, Exact exact,
                              std::size_t work_doubles) {
   if (n <= 0) return 0;
-  parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) { out[i] = filter(i); });
-  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(n));
-  std::int64_t m = static_cast<std::int64_t>(
-      select_indices(ctx, static_cast<std::size_t>(n), list.data(),
-                     [=] GDEL_HD(std::int64_t i) { return out[i] == kUndecided; }));
-  const std::int64_t* lp = list.data();
-  for_each_with_scratch(ctx, m, work_doubles, [=] GDEL_HD(std::int64_t k, double* work) {
-    std::int64_t i = lp[k];
-    out[i] = exact(i, work);
-  });
-  return m;
+  Buffer<std::int8_t, B> und(ctx, static_cast<std::size_t>(n));
+  return fast_then_exact(
+      ctx, n, und.data(),
+      [=] GDEL_HD(std::int64_t i) {
+        out[i] = filter(i);
+        return out[i] != kUndecided;
+      },
+      [=] GDEL_HD(std::int64_t i, double* work) { out[i] = exact(i, work); }, work_doubles);
 }
 
 }  // namespace gdel::par

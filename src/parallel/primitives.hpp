@@ -193,27 +193,23 @@ T reduce_sum(Context<Cuda>& c, const T* in, std::size_t n) {
   });
   return r.get(0);
 }
-template <class T>
-T reduce_max(Context<Cuda>& c, const T* in, std::size_t n, T init) {
+template <class T, class Op>
+T reduce_with(Context<Cuda>& c, const T* in, std::size_t n, Op op, T init) {
   if (!n) return init;
   Buffer<T, Cuda> r(c, 1);
   T* rp = r.data();
   detail::with_temp(c, [&](void* t, std::size_t& b) {
-    return cub::DeviceReduce::Reduce(t, b, in, rp, static_cast<std::int64_t>(n), cuda::maximum<T>(), init,
-                                     c.stream());
+    return cub::DeviceReduce::Reduce(t, b, in, rp, static_cast<std::int64_t>(n), op, init, c.stream());
   });
   return r.get(0);
 }
 template <class T>
+T reduce_max(Context<Cuda>& c, const T* in, std::size_t n, T init) {
+  return reduce_with(c, in, n, cuda::maximum<T>(), init);
+}
+template <class T>
 T reduce_min(Context<Cuda>& c, const T* in, std::size_t n, T init) {
-  if (!n) return init;
-  Buffer<T, Cuda> r(c, 1);
-  T* rp = r.data();
-  detail::with_temp(c, [&](void* t, std::size_t& b) {
-    return cub::DeviceReduce::Reduce(t, b, in, rp, static_cast<std::int64_t>(n), cuda::minimum<T>(), init,
-                                     c.stream());
-  });
-  return r.get(0);
+  return reduce_with(c, in, n, cuda::minimum<T>(), init);
 }
 template <class T, class Pred>
 std::size_t copy_if(Context<Cuda>& c, const T* in, T* out, std::size_t n, Pred pred) {
