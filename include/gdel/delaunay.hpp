@@ -12,9 +12,9 @@
 namespace gdel {
 
 enum class Algorithm {
-  Auto,     // the best available algorithm (today: gflip3d; see README status)
+  Auto,     // the best available exact algorithm (today: gdel3d)
   gflip3d,  // parallel insertion + flipping: a near-Delaunay triangulation (failed vertices reported)
-  gdel3d,   // gflip3d + star-splaying repair: the exact Delaunay triangulation (not yet available)
+  gdel3d,   // gflip3d + parallel star-splaying repair: the exact Delaunay triangulation
 };
 const char* to_string(Algorithm a);
 
@@ -54,14 +54,21 @@ struct Stats {
   std::int64_t flip_iterations = 0; // parallel flipping iterations
   std::int64_t flips23 = 0, flips32 = 0;
   std::int64_t exact_evaluations = 0;  // items decided by the exact (non-filter) pass
-  std::int64_t failed_vertices = 0;    // vertices of facets left not locally Delaunay
+  std::int64_t failed_vertices = 0;    // vertices of facets left not locally Delaunay (in the output)
+  // gdel3d repair: vertices gFlip3D left failing (their stars are rebuilt), stars pulled
+  // from the triangulation on demand, splaying rounds, star insertions attempted, flat
+  // tets (exact zero volume, on coplanar hull faces) dropped from the output
+  std::int64_t repair_failed_vertices = 0, stars_built = 0, stars_pulled = 0, splay_rounds = 0,
+               splay_insertions = 0, flat_tets_removed = 0;
   std::int64_t peak_bytes = 0;         // peak backend memory (device memory for CUDA)
   std::string verify_summary;          // with Options::verify
   std::string to_string() const;
 };
 
 struct Triangulation {
-  // 4 input point ids per tet, positively oriented (orient3d > 0, see docs).
+  // 4 input point ids per tet, positively oriented (orient3d > 0, see docs). gdel3d:
+  // every tet has non-zero volume (exact), and ties between cospherical points are
+  // broken by a symbolic perturbation of the lifting (docs/gdel3d.md).
   std::vector<std::int32_t> tets;
   // 4 per tet: neighbours[4t+i] is the tet across the face opposite vertex i, -1 on the hull.
   std::vector<std::int32_t> neighbors;

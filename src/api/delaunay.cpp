@@ -29,6 +29,10 @@ std::string Stats::to_string() const {
   s << "  rounds " << rounds << ", flip iterations " << flip_iterations << ", flips 2-3 " << flips23 << ", 3-2 "
     << flips32 << ", exact evaluations " << exact_evaluations << ", failed vertices " << failed_vertices
     << ", peak memory " << peak_bytes / (1024.0 * 1024.0) << " MiB";
+  if (algorithm == "gdel3d")
+    s << "\n  repair: failed vertices " << repair_failed_vertices << ", stars built " << stars_built
+      << ", stars pulled " << stars_pulled << ", splay rounds " << splay_rounds << ", insertions "
+      << splay_insertions << ", flat tets removed " << flat_tets_removed;
   if (!verify_summary.empty()) s << "\n  verify: " << verify_summary;
   return s.str();
 }
@@ -74,8 +78,6 @@ Triangulation delaunay(std::span<const double> points, const Options& options) {
     scaled_copy = api::scaled(points, k);
     work = scaled_copy;
   }
-  if (options.algorithm == Algorithm::gdel3d)
-    throw BackendUnavailable("algorithm gdel3d (star-splaying repair) is not implemented yet; use gflip3d");
   Triangulation t;
   if (resolve_backend(options.backend) == Backend::Cuda) {
 #if defined(GDEL_HAVE_CUDA)

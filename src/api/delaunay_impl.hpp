@@ -8,6 +8,7 @@
 #include <string>
 
 #include "flip/gflip3d.hpp"
+#include "splay/gdel3d.hpp"
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "sort/point_sort.hpp"
@@ -25,7 +26,8 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
   Triangulation out;
   Stats& st = out.stats;
   st.backend = B::name;
-  st.algorithm = "gflip3d";
+  const bool exact = opt.algorithm != Algorithm::gflip3d;
+  st.algorithm = exact ? "gdel3d" : "gflip3d";
   const I64 n = static_cast<I64>(points.size() / 3);
   st.points = n;
 
@@ -96,36 +98,39 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
   mesh::MeshView mv = mesh.view();
   const vid_t inf = alg.infinite();
   const flip::Geo g = alg.geo();
-  // failed vertices: facets between finite tets that are not locally Delaunay (SoS)
+  if (exact) {
+    auto t1 = std::chrono::steady_clock::now();
+    splay::GDel3D<B> rep(ctx, mesh, g, m);
+    rep.repair();
+    st.stages.push_back({"gdel3d repair (star splaying)", since(t1)});
+    t1 = std::chrono::steady_clock::now();
+    Buffer<vid_t, B> tv(ctx);
+    Buffer<std::int32_t, B> tn(ctx);
+    rep.extract(tv, tn);
+    const auto& r = rep.result();
+    st.exact_evaluations += r.exact_evaluations;
+    st.repair_failed_vertices = r.failed;
+    st.stars_built = r.stars_built;
+    st.stars_pulled = r.splay.stars_pulled;
+    st.splay_rounds = r.splay.rounds;
+    st.splay_insertions = r.splay.insertions;
+    st.flat_tets_removed = r.flat_removed;
+    vid_t* tvp = tv.data();
+    const I64* sp = sid.data();
+    par::parallel_for(ctx, static_cast<I64>(tv.size()),
+                      [=] GDEL_HD(I64 i) { tvp[i] = static_cast<vid_t>(sp[tvp[i]]); });
+    out.tets = tv.to_host();
+    out.neighbors = tn.to_host();
+    st.stages.push_back({"output", since(t1)});
+    st.peak_bytes = static_cast<I64>(ctx.memory().peak());
+    st.seconds = since(t_start);
+    return out;
+  }
+  // failed vertices: vertices of facets that are not locally Delaunay (the repair's test)
   {
-    Buffer<std::int8_t, B> sgn(ctx, static_cast<std::size_t>(4 * std::max<I64>(nt, 1)));
-    std::int8_t* sg = sgn.data();
-    auto relevant = [=] GDEL_HD(I64 f) -> bool {
-      const tid_t t = static_cast<tid_t>(f >> 2);
-      const fid_t o = mv.opp[f];
-      if (o < 0 || facet_tet(o) < t) return false;
-      if (flip::Geo::inf_slot(mv.tet[t].v, inf) >= 0) return false;
-      return flip::Geo::inf_slot(mv.tet[facet_tet(o)].v, inf) < 0;
-    };
-    st.exact_evaluations += par::two_stage_signs(
-        ctx, 4 * nt, sg,
-        [=] GDEL_HD(I64 f) -> std::int8_t {
-          if (!relevant(f)) return 0;
-          return static_cast<std::int8_t>(g.insphere<false>(mv.tet[f >> 2].v, flip::apex_of(mv, mv.opp[f]), nullptr));
-        },
-        [=] GDEL_HD(I64 f, double* work) -> std::int8_t {
-          return static_cast<std::int8_t>(g.insphere<true>(mv.tet[f >> 2].v, flip::apex_of(mv, mv.opp[f]), work));
-        },
-        geom::kPredicateWork);
     Buffer<std::int8_t, B> fv(ctx, static_cast<std::size_t>(m));
     std::int8_t* fvp = fv.data();
-    par::fill(ctx, fvp, static_cast<std::size_t>(m), std::int8_t(0));
-    par::parallel_for(ctx, 4 * nt, [=] GDEL_HD(I64 f) {
-      if (sg[f] <= 0) return;
-      const vid_t* v = mv.tet[f >> 2].v;
-      const int i = static_cast<int>(f & 3);
-      for (int k = 0; k < 3; ++k) fvp[v[face_vertex(i, k)]] = 1;
-    });
+    st.exact_evaluations += splay::GDel3D<B>::failed_flags(ctx, mv, nt, g, m, fvp);
     Buffer<I64, B> fl(ctx, static_cast<std::size_t>(m));
     std::size_t nfv = par::select_indices(ctx, static_cast<std::size_t>(m), fl.data(),
                                           [=] GDEL_HD(I64 v) { return fvp[v] != 0; });

@@ -10,7 +10,9 @@
 //   insphere(tet, ∞) = outside.
 // Every decision has a fast form (floating-point filter; returns kUndecided when it
 // cannot certify a non-zero sign) and an exact form (exact arithmetic, then
-// simulation of simplicity by original input index: never 0).
+// simulation of simplicity by original input index: never 0). insphere ties are
+// broken by perturbing the lifting first (insphere_lift_sos), so the exact Delaunay
+// triangulation has no flat tets (see orient4).
 #pragma once
 
 #include <cstdint>
@@ -52,6 +54,47 @@ struct Geo {
     return -1;
   }
 
+  // The one lifted orientation every star and repair decision uses (ALGORITHMS.md §4):
+  // the sign, in insphere's convention, of the perturbed 5x5 determinant of the lifted
+  // points v[0..4], ∞ included. For (s,a,b,c) a star facet oriented with the star's
+  // points beneath, > 0 means v[4] is beyond it (in conflict). The perturbation is one
+  // consistent scheme with priorities
+  //   ∞'s height H  >>  its δ-perturbed 3-D terms  >>  exact lifted det  >>  lifting
+  //   perturbation ε (Devillers-Teillaud, insphere_lift_sos)  >>  E-M position SoS δ;
+  // hence: no ∞ → insphere_lift_sos; ∞ at slot j → move it last (odd permutation when
+  // j < 4) where det = -H·orient3d_sos(the other four) decides. Finite flat tets never
+  // survive as lower-hull facets under the lifting perturbation (docs/gdel3d.md).
+  template <bool Exact>
+  GDEL_HD int orient4(const vid_t* v, double* work) const {
+    int j = -1;
+    for (int i = 0; i < 5; ++i)
+      if (v[i] == inf) j = i;
+    if (j < 0) {
+      if constexpr (Exact) {
+        return geom::insphere_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), sid[v[0]], sid[v[1]],
+                                       sid[v[2]], sid[v[3]], sid[v[4]], work);
+      } else {
+        int s = geom::insphere_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]));
+        return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
+      }
+    }
+    vid_t u[4];
+    for (int i = 0; i < 4; ++i) u[i] = v[i];
+    if (j < 4) u[j] = v[4];
+    int s;
+    if constexpr (Exact) {
+      s = geom::orient3d_sos(p(u[0]), p(u[1]), p(u[2]), p(u[3]), sid[u[0]], sid[u[1]], sid[u[2]], sid[u[3]], work);
+    } else {
+      s = geom::orient3d_filter(p(u[0]), p(u[1]), p(u[2]), p(u[3]));
+      if (s == geom::kUncertain || s == 0) return par::kUndecided;
+    }
+    return j < 4 ? s : -s;
+  }
+  GDEL_HD int orient4_any(const vid_t* v, double* work) const {
+    int s = orient4<false>(v, nullptr);
+    return s != par::kUndecided ? s : orient4<true>(v, work);
+  }
+
   // > 0 iff e is strictly inside the circumsphere of the positive tet t.
   template <bool Exact>
   GDEL_HD int insphere(const vid_t* t, vid_t e, double* work) const {
@@ -59,8 +102,8 @@ struct Geo {
     int j = inf_slot(t, inf);
     if (j >= 0) return orient<Exact>(t[face_vertex(j, 0)], t[face_vertex(j, 1)], t[face_vertex(j, 2)], e, work);
     if constexpr (Exact) {
-      return geom::insphere_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]], sid[t[2]],
-                                sid[t[3]], sid[e], work);
+      return geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]], sid[t[2]],
+                                     sid[t[3]], sid[e], work);
     } else {
       int s = geom::insphere_filter(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
       return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;

@@ -68,7 +68,9 @@
 // sign is that of the first non-zero derivative dP/dh_i, taken in decreasing index order;
 // dP/dh_i = (-1)^(i+1) orient3d(the other four points in their order), i = 0..4 the
 // argument position (so for e: -orient3d(a,b,c,d)). If all five vanish (five coplanar
-// points) the full E-M perturbation (*_sos) decides. Never 0.
+// points) the positions' perturbation decides, ordered below every lifting term (see
+// detail::lift_sos_degenerate; orient3d_sos uses the same position perturbation, so
+// lifted and plain decisions belong to one perturbed configuration). Never 0.
 #pragma once
 
 #include <cassert>
@@ -111,6 +113,8 @@ inline constexpr std::size_t kMinorWork = detail::det_work(3, detail::lift_len(t
 inline constexpr std::size_t kPredicateWork = kPowerWork;
 static_assert(kPredicateWork >= kOrient3dWork && kPredicateWork >= kInsphereWork &&
               kPredicateWork >= kMinorWork && kPredicateWork == 7015);
+
+GDEL_HD inline int lifted_minor(const double* const* p, const double* w, unsigned mask, double* work);
 
 namespace detail {
 
@@ -186,29 +190,96 @@ GDEL_HD inline int lifted_sos_degenerate(const double* const* p, const double* w
   return (swaps & 1) ? v : -v;                      // value = -det5(original order)
 }
 
-// Lifting-only perturbation given that the exact value is 0.
+// Lifting-first perturbation given that the exact value is 0. The model: sorted row r
+// (ascending original index) is the lifted point (x + d^(2^(3r)), y + d^(2^(3r+1)),
+// z + d^(2^(3r+2)), h + e_r) with e_r larger for a larger index, and every power of e
+// dominating every power of d (terms are compared by their d-degree first, then by e).
+// The determinant is linear in each height, so its terms are: for each set E of
+// position perturbations (distinct rows and columns, at most 3 entries, taken in
+// increasing d-exponent = increasing bitmask), the pure term, then the terms with one
+// e_r in decreasing e order; each coefficient is a signed minor of the unperturbed
+// matrix with rows (x, y, z, h, 1). E = {} gives the exact heights' derivatives
+// dP/dh_r = +-orient3d(other four); five coplanar points go on to position terms
+// (never the pure E-M table, whose order would not be compatible with this one).
 GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
                                        const std::int64_t* ids, bool weighted, double* work) {
   std::int64_t idx[5] = {ids[0], ids[1], ids[2], ids[3], ids[4]};
   int perm[5] = {0, 1, 2, 3, 4};
-  sort_network<5>(idx, perm);
-  for (int k = 4; k >= 0; --k) {  // decreasing index: the largest perturbation first
-    const int i = perm[k];
-    const double* q[4];
-    for (int t = 0, u = 0; t < 5; ++t)
-      if (t != i) q[u++] = p[t];
-    int s = orient3d_filter(q[0], q[1], q[2], q[3]);
-    if (s == kUncertain) {
-      LiftedRows R;
-      for (int t = 0; t < 4; ++t) {
-        R.p[t] = q[t];
-        R.w[t] = 0.0;
-      }
-      s = orient3d_exact_rows(R, work);
-    }
-    if (s != 0) return (i & 1) ? s : -s;  // dP/dh_i = (-1)^(i+1) orient3d(others)
+  const int swaps = sort_network<5>(idx, perm);
+  const double* P[5];
+  double W[5];
+  for (int r = 0; r < 5; ++r) {
+    P[r] = p[perm[r]];
+    W[r] = weighted ? w[perm[r]] : 0.0;
   }
-  return lifted_sos_degenerate(p, w, ids, weighted, work);
+  // sign of the permutation sigma (rows -> columns)
+  auto parity = [](const int* sigma) {
+    int inv = 0;
+    for (int i = 0; i < 5; ++i)
+      for (int j = i + 1; j < 5; ++j) inv += sigma[i] > sigma[j];
+    return (inv & 1) ? -1 : 1;
+  };
+  // sign of det of rows `rows` (ascending, k+1 of them) over columns `mask` + the ones
+  auto minor = [&](const int* rows, int nrows, unsigned mask) -> int {
+    if (mask == 0) return 1;  // the 1x1 determinant [1]
+    const double* q[5];
+    double qw[5];
+    for (int i = 0; i < nrows; ++i) {
+      q[i] = P[rows[i]];
+      qw[i] = W[rows[i]];
+    }
+    return lifted_minor(q, weighted ? qw : nullptr, mask, work);
+  };
+  for (unsigned E = 0; E < (1u << 15); ++E) {
+    int row_of_col[3] = {-1, -1, -1};
+    unsigned used_rows = 0;
+    bool ok = true;
+    int k = 0;
+    for (int bit = 0; bit < 15 && ok; ++bit) {
+      if (!(E & (1u << bit))) continue;
+      const int r = bit / 3, c = bit % 3;
+      if ((used_rows & (1u << r)) || row_of_col[c] >= 0) ok = false;
+      used_rows |= 1u << r;
+      row_of_col[c] = r;
+      ++k;
+    }
+    if (!ok) continue;
+    unsigned free_cols = 0;  // the unperturbed x, y, z columns left
+    for (int c = 0; c < 3; ++c)
+      if (row_of_col[c] < 0) free_cols |= 1u << c;
+    // the term with only E (pure; E = {} is the exact value, known to be 0), then e_r
+    for (int extra = (E == 0 ? 4 : 5); extra >= 0; --extra) {
+      // extra == 5: pure term; else e on row `extra`
+      if (extra < 5 && (used_rows & (1u << extra))) continue;
+      int sigma[5];
+      int rows[5];
+      int nrows = 0;
+      unsigned all_rows = used_rows | (extra < 5 ? 1u << extra : 0u);
+      for (int r = 0; r < 5; ++r) sigma[r] = -1;
+      for (int c = 0; c < 3; ++c)
+        if (row_of_col[c] >= 0) sigma[row_of_col[c]] = c;
+      if (extra < 5) sigma[extra] = 3;
+      // remaining rows (ascending) take the remaining columns (ascending)
+      int cols[5];
+      int nc = 0;
+      for (int c = 0; c < 5; ++c) {
+        bool taken = (c < 3 && row_of_col[c] >= 0) || (c == 3 && extra < 5);
+        if (!taken) cols[nc++] = c;
+      }
+      for (int r = 0, j = 0; r < 5; ++r)
+        if (!(all_rows & (1u << r))) {
+          sigma[r] = cols[j++];
+          rows[nrows++] = r;
+        }
+      const unsigned mask = free_cols | (extra < 5 ? 0u : unsigned(kColH));
+      const int m = minor(rows, nrows, mask);
+      if (m != 0) {
+        const int v = parity(sigma) * m;  // sign of the perturbed det5 of the sorted rows
+        return (swaps & 1) ? v : -v;      // value = -det5(original order)
+      }
+    }
+  }
+  return lifted_sos_degenerate(p, w, ids, weighted, work);  // unreachable: E={x,y,z} + e gives 1
 }
 
 }  // namespace detail

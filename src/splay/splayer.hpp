@@ -1,0 +1,563 @@
+// The star splaying engine (ALGORITHMS.md §4.4, §4.8, §5.5), written once over the
+// backend tag B: stars in one flat growable layout, and the bulk splaying rounds
+//
+//   requests (target star ← vertex)  →  sort + unique  →  drop those already tried
+//   (history) or present  →  insert by beneath-beyond, one thread per star  →
+//   drowned / submerged pairs  →  confinement proofs  →  new requests from proofs and
+//   from every link triangle created since the last round (each tet sabc of star s
+//   asks stars a, b, c for the other three vertices)
+//
+// until a round produces no new request. Inserting v into star s is attempted at most
+// once (a star's cone only grows, so a drowned or submerged vertex stays inside).
+// Stars that a request targets but that do not exist yet are obtained from a Source
+// (gDel3D: from the triangulation T; they are convex there). ∞ never gets a star; a
+// proof that ∞ is inside the star of s is handed to every star holding a link
+// triangle with both s and ∞ (the stars that make up "∞'s star").
+#pragma once
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "parallel/atomic.hpp"
+#include "parallel/exact_batch.hpp"
+#include "parallel/primitives.hpp"
+#include "splay/star.hpp"
+
+namespace gdel::splay {
+
+using par::Buffer;
+using par::Context;
+using I64 = std::int64_t;
+using U64 = std::uint64_t;
+
+GDEL_HD inline U64 pair_key(vid_t target, vid_t v) {
+  return (static_cast<U64>(static_cast<std::uint32_t>(target)) << 32) | static_cast<std::uint32_t>(v);
+}
+GDEL_HD inline vid_t key_target(U64 k) { return static_cast<vid_t>(k >> 32); }
+GDEL_HD inline vid_t key_vertex(U64 k) { return static_cast<vid_t>(k & 0xffffffffu); }
+
+GDEL_HD inline bool sorted_contains(const U64* a, I64 n, U64 k) {
+  I64 lo = 0, hi = n;
+  while (lo < hi) {
+    const I64 mid = (lo + hi) / 2;
+    if (a[mid] < k) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo < n && a[lo] == k;
+}
+
+// Plain pointers to the stars, for kernels.
+struct StarView {
+  vid_t* vert;          // star -> its vertex
+  I64* begin;           // star -> first triangle slot
+  std::int32_t* cap;    // star -> slots reserved
+  std::int32_t* count;  // star -> triangles in use, [0, count)
+  Tri* tri;
+  std::uint8_t* state;
+};
+
+struct SplayStats {
+  I64 rounds = 0, insertions = 0, drowned = 0, submerged = 0, stars_pulled = 0, proofs = 0;
+};
+
+template <class B>
+class Splayer {
+ public:
+  Splayer(Context<B>& ctx, flip::Geo g, vid_t num_vertices)
+      : ctx_(ctx), g_(g), nv_(num_vertices), star_of_(ctx, static_cast<std::size_t>(num_vertices)), vert_(ctx),
+        begin_(ctx), cap_(ctx), count_(ctx), tri_(ctx), state_(ctx), history_(ctx), inf_proof_key_(ctx),
+        inf_proof_(ctx), error_(ctx, 1) {
+    par::fill(ctx, star_of_.data(), star_of_.size(), std::int32_t(-1));
+    par::fill(ctx, error_.data(), std::size_t(1), std::int32_t(0));
+  }
+
+  I64 num_stars() const { return nst_; }
+  I64 slot_count() const { return slots_; }
+  const std::int32_t* star_of() { return star_of_.data(); }
+  StarView view() {
+    return StarView{vert_.data(), begin_.data(), cap_.data(), count_.data(), tri_.data(), state_.data()};
+  }
+  SplayStats& stats() { return ss_; }
+
+  // Appends stars for the given vertices (which must not have one) with the given
+  // capacities (host arrays); returns the id of the first new star. Triangles are
+  // left for the caller to fill (count = 0).
+  I64 add_stars(const Buffer<vid_t, B>& verts, const Buffer<std::int32_t, B>& caps) {
+    const I64 k = static_cast<I64>(verts.size());
+    const I64 s0 = nst_;
+    if (k == 0) return s0;
+    vert_.resize(static_cast<std::size_t>(s0 + k));
+    begin_.resize(static_cast<std::size_t>(s0 + k + 1));
+    cap_.resize(static_cast<std::size_t>(s0 + k));
+    count_.resize(static_cast<std::size_t>(s0 + k));
+    vid_t* vp = vert_.data();
+    I64* bp = begin_.data();
+    std::int32_t* cp = cap_.data();
+    std::int32_t* np = count_.data();
+    std::int32_t* so = star_of_.data();
+    const vid_t* in = verts.data();
+    const std::int32_t* ic = caps.data();
+    Buffer<I64, B> off(ctx_, static_cast<std::size_t>(k + 1));
+    I64* op = off.data();
+    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 i) { op[i] = ic[i]; });
+    const I64 total = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(k));
+    const I64 base = slots_;
+    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 i) {
+      const I64 s = s0 + i;
+      vp[s] = in[i];
+      bp[s] = base + op[i];
+      cp[s] = ic[i];
+      np[s] = 0;
+      so[in[i]] = static_cast<std::int32_t>(s);
+    });
+    slots_ = base + total;
+    tri_.resize(static_cast<std::size_t>(slots_));
+    state_.resize(static_cast<std::size_t>(slots_));
+    std::uint8_t* sp = state_.data();
+    par::parallel_for(ctx_, total, [=] GDEL_HD(I64 i) { sp[base + i] = kTriFree; });
+    nst_ = s0 + k;
+    return s0;
+  }
+
+  // Makes every star's capacity at least need[s] (device array over stars), moving all
+  // stars to a fresh layout when one must grow.
+  void ensure_capacity(const std::int32_t* need) {
+    if (nst_ == 0) return;
+    std::int32_t* cp = cap_.data();
+    Buffer<std::int32_t, B> grow(ctx_, static_cast<std::size_t>(nst_));
+    std::int32_t* gp = grow.data();
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) { gp[s] = need[s] > cp[s] ? 1 : 0; });
+    if (par::reduce_max(ctx_, gp, static_cast<std::size_t>(nst_), std::int32_t(0)) == 0) return;
+    Buffer<I64, B> off(ctx_, static_cast<std::size_t>(nst_ + 1));
+    I64* op = off.data();
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+      const std::int32_t c = need[s] > cp[s] ? need[s] + need[s] / 4 : cp[s];
+      gp[s] = c;
+      op[s] = c;
+    });
+    const I64 total = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(nst_));
+    Buffer<Tri, B> nt(ctx_, static_cast<std::size_t>(total));
+    Buffer<std::uint8_t, B> ns(ctx_, static_cast<std::size_t>(total));
+    Tri* ntp = nt.data();
+    std::uint8_t* nsp = ns.data();
+    const Tri* otp = tri_.data();
+    const std::uint8_t* osp = state_.data();
+    I64* bp = begin_.data();
+    const std::int32_t* np = count_.data();
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+      const I64 b = bp[s], d = op[s];
+      for (std::int32_t i = 0; i < gp[s]; ++i) {
+        if (i < np[s]) {
+          ntp[d + i] = otp[b + i];
+          nsp[d + i] = osp[b + i];
+        } else {
+          nsp[d + i] = kTriFree;
+        }
+      }
+    });
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+      bp[s] = op[s];
+      cp[s] = gp[s];
+    });
+    tri_ = std::move(nt);
+    state_ = std::move(ns);
+    slots_ = total;
+  }
+
+  // Runs splaying rounds from the given requests (keys pair_key(target, vertex), any
+  // order, duplicates allowed) until no new request appears. `pull(list)` must create
+  // the stars of the vertices in `list` (a device buffer of vertex ids without stars).
+  template <class Pull>
+  void run(Buffer<U64, B>& req, Pull pull) {
+    for (;;) {
+      I64 n = static_cast<I64>(req.size());
+      if (n > 0) {
+        par::sort_keys(ctx_, req.data(), static_cast<std::size_t>(n));
+        n = static_cast<I64>(par::unique(ctx_, req.data(), static_cast<std::size_t>(n)));
+        req.resize(static_cast<std::size_t>(n));
+      }
+      if (n > 0) pull_targets(req, pull);
+      if (debug_) std::fprintf(stderr, "  convexity violations: %lld, largest star %d triangles\n",
+                               (long long)convexity_violations(),
+                               nst_ ? par::reduce_max(ctx_, count_.data(), static_cast<std::size_t>(nst_), 0) : 0);
+      const I64 n_raw = n;
+      n = filter(req);
+      if (debug_) std::fprintf(stderr, "splay round %lld: %lld requests, %lld new, %lld stars\n", (long long)ss_.rounds,
+                               (long long)n_raw, (long long)n, (long long)nst_);
+      if (n == 0) break;
+      ++ss_.rounds;
+      ss_.insertions += n;
+      add_history(req);
+      Buffer<U64, B> gone(ctx_);
+      insert_round(req, gone);
+      Buffer<U64, B> next(ctx_);
+      proofs(gone, next, pull);
+      checks(next);
+      req = std::move(next);
+    }
+  }
+
+  // Fails loudly if a kernel saw a broken (non-convex) star.
+  void throw_if_error(const char* where) {
+    std::int32_t e = 0;
+    error_.copy_to_host(&e, 1);
+    if (e != 0)
+      throw std::runtime_error(std::string("gdel internal error: star splaying found an inconsistent star (") +
+                               where + ", code " + std::to_string(e) + ")");
+  }
+
+  void set_error(std::int32_t code) {
+    std::int32_t* ep = error_.data();
+    par::parallel_for(ctx_, 1, [=] GDEL_HD(I64) { ep[0] = code; });
+  }
+  std::int32_t* error_ptr() { return error_.data(); }
+
+  // Debug: number of (star, triangle, link vertex) triples where the link vertex is
+  // beyond the triangle (0 iff every star is convex).
+  I64 convexity_violations() {
+    if (nst_ == 0) return 0;
+    const StarView sv = view();
+    const flip::Geo g = g_;
+    Buffer<I64, B> bad(ctx_, static_cast<std::size_t>(nst_));
+    I64* bp = bad.data();
+    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_HD(I64 s, double* work) {
+      const Tri* T = sv.tri + sv.begin[s];
+      I64 c = 0;
+      for (std::int32_t i = 0; i < sv.count[s]; ++i)
+        for (std::int32_t j = 0; j < sv.count[s]; ++j)
+          for (int k = 0; k < 3; ++k) {
+            const vid_t x = T[j].v[k];
+            if (tri_pos(T[i], x) >= 0) continue;
+            if (star_side(g, T[i], sv.vert[s], x, work) > 0) ++c;
+          }
+      bp[s] = c;
+    });
+    return par::reduce_sum(ctx_, bp, static_cast<std::size_t>(nst_));
+  }
+
+  // (public for nvcc's extended lambdas)
+  template <class Pull>
+  void pull_targets(Buffer<U64, B>& req, Pull pull) {
+    const I64 n = static_cast<I64>(req.size());
+    const U64* rp = req.data();
+    const std::int32_t* so = star_of_.data();
+    Buffer<vid_t, B> miss(ctx_, static_cast<std::size_t>(n));
+    vid_t* mp = miss.data();
+    Buffer<I64, B> idx(ctx_, static_cast<std::size_t>(n));
+    const std::size_t k = par::select_indices(ctx_, static_cast<std::size_t>(n), idx.data(), [=] GDEL_HD(I64 i) {
+      const vid_t t = key_target(rp[i]);
+      return so[t] < 0 && (i == 0 || key_target(rp[i - 1]) != t);
+    });
+    if (k == 0) return;
+    const I64* ip = idx.data();
+    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 i) { mp[i] = key_target(rp[ip[i]]); });
+    miss.resize(k);
+    ss_.stars_pulled += static_cast<I64>(k);
+    pull(miss);
+  }
+
+  // Drops requests already tried (history) or whose vertex is in the target's link;
+  // compacts req; returns the number left.
+  I64 filter(Buffer<U64, B>& req) {
+    const I64 n = static_cast<I64>(req.size());
+    if (n == 0) return 0;
+    const U64* rp = req.data();
+    const U64* hp = history_.data();
+    const I64 nh = static_cast<I64>(history_.size());
+    const std::int32_t* so = star_of_.data();
+    const StarView sv = view();
+    Buffer<U64, B> out(ctx_, static_cast<std::size_t>(n));
+    const std::size_t k = par::copy_if(ctx_, rp, out.data(), static_cast<std::size_t>(n), [=] GDEL_HD(U64 key) {
+      if (sorted_contains(hp, nh, key)) return false;
+      const std::int32_t s = so[key_target(key)];
+      return !star_has(sv.tri + sv.begin[s], sv.count[s], key_vertex(key));
+    });
+    out.resize(k);
+    req = std::move(out);
+    return static_cast<I64>(k);
+  }
+
+  void add_history(const Buffer<U64, B>& req) {
+    const std::size_t h = history_.size(), n = req.size();
+    history_.resize(h + n);
+    U64* hp = history_.data() + h;
+    const U64* rp = req.data();
+    par::parallel_for(ctx_, static_cast<I64>(n), [=] GDEL_HD(I64 i) { hp[i] = rp[i]; });
+    par::sort_keys(ctx_, history_.data(), h + n);
+  }
+
+  // Inserts the (sorted, filtered) requests, one thread per target star. Pairs (s, v)
+  // with v drowned or submerged in star s go to `gone` as pair_key(s_vertex, v).
+  void insert_round(const Buffer<U64, B>& req, Buffer<U64, B>& gone) {
+    const I64 n = static_cast<I64>(req.size());
+    const U64* rp = req.data();
+    const std::int32_t* so = star_of_.data();
+    // per-star request ranges
+    Buffer<I64, B> heads(ctx_, static_cast<std::size_t>(n));
+    const std::size_t nh = par::select_indices(ctx_, static_cast<std::size_t>(n), heads.data(), [=] GDEL_HD(I64 i) {
+      return i == 0 || key_target(rp[i - 1]) != key_target(rp[i]);
+    });
+    const I64* hp = heads.data();
+    // capacity: count + 2 per insertion, doubled for the transient fan, + 2
+    Buffer<std::int32_t, B> need(ctx_, static_cast<std::size_t>(nst_));
+    std::int32_t* np = need.data();
+    const std::int32_t* cnt = count_.data();
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) { np[s] = 0; });
+    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_HD(I64 j) {
+      const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
+      const std::int32_t s = so[key_target(rp[a])];
+      np[s] = 2 * (cnt[s] + 2 * static_cast<std::int32_t>(b - a)) + 4;
+    });
+    ensure_capacity(np);
+    // room for gone pairs: every link vertex and every insertion at most once
+    Buffer<I64, B> room(ctx_, static_cast<std::size_t>(nh + 1));
+    I64* rmp = room.data();
+    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_HD(I64 j) {
+      const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
+      const std::int32_t s = so[key_target(rp[a])];
+      rmp[j] = cnt[s] / 2 + 3 + 3 * (b - a);
+    });
+    const I64 total = par::counts_to_offsets(ctx_, rmp, static_cast<std::size_t>(nh));
+    gone.resize(static_cast<std::size_t>(std::max<I64>(total, 1)));
+    U64* gp = gone.data();
+    Buffer<I64, B> used(ctx_, static_cast<std::size_t>(nh));
+    I64* up = used.data();
+    const StarView sv = view();
+    const flip::Geo g = g_;
+    std::int32_t* ep = error_.data();
+    par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
+      const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
+      const vid_t sv_vert = key_target(rp[a]);
+      const std::int32_t s = so[sv_vert];
+      Tri* T = sv.tri + sv.begin[s];
+      std::uint8_t* S = sv.state + sv.begin[s];
+      std::int32_t count = sv.count[s];
+      I64 k = rmp[j];
+      const I64 kend = rmp[j + 1];
+      for (I64 i = a; i < b; ++i) {
+        const vid_t q = key_vertex(rp[i]);
+        const int r = star_insert(g, T, S, count, sv.cap[s], sv_vert, q, work, [&](vid_t x) {
+          if (k < kend) gp[k++] = pair_key(sv_vert, x);
+          else ep[0] = 3;
+        });
+        if (r == kDrowned) {
+          if (k < kend) gp[k++] = pair_key(sv_vert, q);
+          else ep[0] = 3;
+        } else if (r != kInserted) {
+          ep[0] = r == kStarFull ? 2 : 1;
+        }
+      }
+      sv.count[s] = count;
+      up[j] = k - rmp[j];
+    });
+    throw_if_error("insertion");
+    // compact the gone pairs
+    Buffer<U64, B> packed(ctx_, static_cast<std::size_t>(std::max<I64>(total, 1)));
+    U64* pk = packed.data();
+    Buffer<I64, B> off(ctx_, static_cast<std::size_t>(nh + 1));
+    I64* op = off.data();
+    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_HD(I64 j) { op[j] = up[j]; });
+    const I64 ng = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(nh));
+    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_HD(I64 j) {
+      for (I64 i = 0; i < up[j]; ++i) pk[op[j] + i] = gp[rmp[j] + i];
+    });
+    packed.resize(static_cast<std::size_t>(ng));
+    if (ng > 0) {
+      par::sort_keys(ctx_, packed.data(), static_cast<std::size_t>(ng));
+      packed.resize(par::unique(ctx_, packed.data(), static_cast<std::size_t>(ng)));
+    }
+    gone = std::move(packed);
+  }
+
+  // For every gone pair (s, v): the proof of v inside star s. v finite: requests
+  // (v ← proof); v = ∞: remembered, and handed out by checks().
+  template <class Pull>
+  void proofs(const Buffer<U64, B>& gone_all, Buffer<U64, B>& next, Pull pull) {
+    // A proof is needed only where star v still holds s (§4.4); stars of v that do not
+    // exist yet are pulled first (they hold s when T has the edge).
+    const vid_t inf = g_.inf;
+    Buffer<U64, B> gone(ctx_);
+    {
+      const I64 n0 = static_cast<I64>(gone_all.size());
+      if (n0 == 0) return;
+      Buffer<U64, B> rev(ctx_, static_cast<std::size_t>(n0));
+      U64* rv = rev.data();
+      const U64* ga = gone_all.data();
+      par::parallel_for(ctx_, n0, [=] GDEL_HD(I64 i) {
+        const vid_t v = key_vertex(ga[i]);
+        rv[i] = v == inf ? ~U64(0) : pair_key(v, key_target(ga[i]));
+      });
+      par::sort_keys(ctx_, rv, static_cast<std::size_t>(n0));
+      Buffer<U64, B> revc(ctx_, static_cast<std::size_t>(n0));
+      const std::size_t kr = par::copy_if(ctx_, rv, revc.data(), static_cast<std::size_t>(n0),
+                                          [=] GDEL_HD(U64 k) { return k != ~U64(0); });
+      revc.resize(kr);
+      if (kr > 0) pull_targets(revc, pull);
+      const std::int32_t* so = star_of_.data();
+      const StarView sv = view();
+      gone.resize(static_cast<std::size_t>(n0));
+      const std::size_t kg = par::copy_if(ctx_, ga, gone.data(), static_cast<std::size_t>(n0), [=] GDEL_HD(U64 k) {
+        const vid_t v = key_vertex(k);
+        if (v == inf) return true;
+        const std::int32_t st = so[v];
+        return st >= 0 && star_has(sv.tri + sv.begin[st], sv.count[st], key_target(k));
+      });
+      gone.resize(kg);
+    }
+    const I64 n = static_cast<I64>(gone.size());
+    ss_.proofs += n;
+    next.resize(static_cast<std::size_t>(4 * n));
+    if (n == 0) return;
+    const U64* gp = gone.data();
+    U64* np = next.data();
+    const std::int32_t* so = star_of_.data();
+    const StarView sv = view();
+    const flip::Geo g = g_;
+    std::int32_t* ep = error_.data();
+    Buffer<vid_t, B> pf(ctx_, static_cast<std::size_t>(4 * n));
+    vid_t* pp = pf.data();
+    par::for_each_with_scratch(ctx_, n, geom::kPredicateWork, [=] GDEL_HD(I64 i, double* work) {
+      const vid_t s = key_target(gp[i]), v = key_vertex(gp[i]);
+      const std::int32_t st = so[s];
+      vid_t out[4];
+      if (!star_proof(g, sv.tri + sv.begin[st], sv.count[st], s, v, out, work)) {
+        ep[0] = 4;
+        for (int k = 0; k < 4; ++k) np[4 * i + k] = ~U64(0);
+        return;
+      }
+      for (int k = 0; k < 4; ++k) {
+        pp[4 * i + k] = out[k];
+        np[4 * i + k] = (v == inf || out[k] == inf) ? ~U64(0) : pair_key(v, out[k]);
+      }
+    });
+    throw_if_error("confinement proof");
+    // proofs of ∞: keep (s -> proof) sorted by s
+    Buffer<I64, B> idx(ctx_, static_cast<std::size_t>(n));
+    const std::size_t k = par::select_indices(ctx_, static_cast<std::size_t>(n), idx.data(),
+                                              [=] GDEL_HD(I64 i) { return key_vertex(gp[i]) == inf; });
+    if (k > 0) {
+      const std::size_t h = inf_proof_key_.size();
+      inf_proof_key_.resize(h + k);
+      inf_proof_.resize(4 * (h + k));
+      U64* kp = inf_proof_key_.data();
+      vid_t* ip = inf_proof_.data();
+      const I64* xp = idx.data();
+      par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
+        const I64 i = xp[j];
+        kp[h + j] = (U64(static_cast<std::uint32_t>(key_target(gp[i]))) << 32) | U64(h + j);
+        for (int q = 0; q < 4; ++q) ip[4 * (h + j) + q] = pp[4 * i + q];
+      });
+      // sort by star vertex (the low bits keep the proof slot)
+      par::sort_keys(ctx_, inf_proof_key_.data(), h + k);
+    }
+    // drop the ~0 placeholders
+    Buffer<U64, B> out(ctx_, next.size());
+    const std::size_t m = par::copy_if(ctx_, next.data(), out.data(), next.size(),
+                                       [=] GDEL_HD(U64 key) { return key != ~U64(0); });
+    out.resize(m);
+    next = std::move(out);
+  }
+
+  // Requests from every link triangle created since the last round (then marked
+  // checked): tet (s,a,b,c) asks a, b and c for the other three vertices. Also hands
+  // the proofs of ∞ to the stars with a link triangle holding both s and ∞.
+  void checks(Buffer<U64, B>& next) {
+    if (nst_ == 0) return;
+    const StarView sv = view();
+    const vid_t inf = g_.inf;
+    const U64* ikp = inf_proof_key_.data();
+    const vid_t* ipp = inf_proof_.data();
+    const I64 ni = static_cast<I64>(inf_proof_key_.size());
+    Buffer<I64, B> cnt(ctx_, static_cast<std::size_t>(nst_ + 1));
+    I64* cp = cnt.data();
+    // number of requests per star
+    auto inf_proof_of = [=] GDEL_HD(vid_t x) -> I64 {  // index into inf_proof_, or -1
+      const U64 lo = U64(static_cast<std::uint32_t>(x)) << 32;
+      I64 a = 0, b = ni;
+      while (a < b) {
+        const I64 mid = (a + b) / 2;
+        if (ikp[mid] < lo) a = mid + 1;
+        else b = mid;
+      }
+      return (a < ni && (ikp[a] >> 32) == (lo >> 32)) ? static_cast<I64>(ikp[a] & 0xffffffffu) : -1;
+    };
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+      const Tri* T = sv.tri + sv.begin[s];
+      const std::uint8_t* S = sv.state + sv.begin[s];
+      I64 c = 0;
+      for (std::int32_t i = 0; i < sv.count[s]; ++i) {
+        if (S[i] == kTriNew) c += 9;
+        if (ni > 0 && tri_pos(T[i], inf) >= 0) c += 12;
+      }
+      cp[s] = c;
+    });
+    const I64 total = par::counts_to_offsets(ctx_, cp, static_cast<std::size_t>(nst_));
+    const I64 base = static_cast<I64>(next.size());
+    next.resize(static_cast<std::size_t>(base + total));
+    U64* np = next.data() + base;
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+      Tri* T = sv.tri + sv.begin[s];
+      std::uint8_t* S = sv.state + sv.begin[s];
+      const vid_t me = sv.vert[s];
+      I64 k = cp[s];
+      const I64 kend = cp[s + 1];
+      for (std::int32_t i = 0; i < sv.count[s]; ++i) {
+        const vid_t* v = T[i].v;
+        if (S[i] == kTriNew) {
+          S[i] = kTriChecked;
+          const vid_t tet[4] = {me, v[0], v[1], v[2]};
+          for (int a = 1; a < 4; ++a)
+            for (int b = 0; b < 4; ++b) {
+              if (b == a) continue;
+              np[k++] = tet[a] == inf ? ~U64(0) : pair_key(tet[a], tet[b]);
+            }
+        }
+        if (ni > 0) {
+          const int pi = tri_pos(T[i], inf);
+          if (pi >= 0) {
+            for (int q = 1; q <= 2; ++q) {
+              const vid_t x = v[(pi + q) % 3];
+              const I64 pr = inf_proof_of(x);
+              for (int w = 0; w < 4; ++w) {
+                const vid_t y = pr >= 0 ? ipp[4 * pr + w] : inf;
+                np[k++] = (pr < 0 || y == inf || y == me) ? ~U64(0) : pair_key(me, y);
+              }
+            }
+            for (int w = 0; w < 4; ++w) np[k++] = ~U64(0);
+          }
+        }
+      }
+      while (k < kend) np[k++] = ~U64(0);
+    });
+    Buffer<U64, B> out(ctx_, next.size());
+    const std::size_t m = par::copy_if(ctx_, next.data(), out.data(), next.size(),
+                                       [=] GDEL_HD(U64 key) { return key != ~U64(0); });
+    out.resize(m);
+    next = std::move(out);
+  }
+
+ private:
+  Context<B>& ctx_;
+  flip::Geo g_;
+  vid_t nv_;
+  Buffer<std::int32_t, B> star_of_;
+  Buffer<vid_t, B> vert_;
+  Buffer<I64, B> begin_;
+  Buffer<std::int32_t, B> cap_, count_;
+  Buffer<Tri, B> tri_;
+  Buffer<std::uint8_t, B> state_;
+  Buffer<U64, B> history_;
+  Buffer<U64, B> inf_proof_key_;  // (star vertex << 32 | proof slot), sorted
+  Buffer<vid_t, B> inf_proof_;    // 4 per proof slot
+  Buffer<std::int32_t, B> error_;
+  I64 nst_ = 0;
+  I64 slots_ = 0;
+  bool debug_ = std::getenv("GDEL_SPLAY_DEBUG") != nullptr;
+  SplayStats ss_;
+};
+
+}  // namespace gdel::splay

@@ -1,0 +1,245 @@
+// Stars of lifted points (ALGORITHMS.md §2.5, §4.5, §4.6): the per-star routines of the
+// star splaying engine, usable on host and device (one thread owns one star).
+//
+// A star of vertex s is a triangulated 2-sphere, its link: triangles (a,b,c) oriented so
+// that the lifted tet (s,a,b,c) has every other point of the star beneath it, i.e.
+// Geo::orient4(s,a,b,c,x) < 0. The link may contain ∞ (s on the hull). A star's
+// triangles live in a contiguous slot range [0, count) (no holes between operations);
+// adj[k] = (local triangle << 2 | edge) across edge k, edge k being the one opposite v[k],
+// i.e. (v[k+1], v[k+2]).
+#pragma once
+
+#include <cstdint>
+
+#include "flip/geo.hpp"
+#include "mesh/conventions.hpp"
+
+namespace gdel::splay {
+
+struct Tri {
+  vid_t v[3];
+  std::int32_t adj[3];
+};
+
+enum TriState : std::uint8_t {
+  kTriFree = 0,
+  kTriChecked = 1,  // consistency already checked (or known from the input triangulation)
+  kTriNew = 2,      // created since the last consistency check
+  kTriBeyond = 4,   // flag bit, transient: beyond the point being inserted
+};
+
+GDEL_HD inline bool is_beyond(std::uint8_t s) { return (s & kTriBeyond) != 0; }
+
+enum InsertResult : int { kInserted = 0, kDrowned = 1, kStarBroken = -1, kStarFull = -2 };
+
+GDEL_HD inline int tri_pos(const Tri& t, vid_t x) {
+  return t.v[0] == x ? 0 : t.v[1] == x ? 1 : t.v[2] == x ? 2 : -1;
+}
+
+GDEL_HD inline bool star_has(const Tri* T, std::int32_t count, vid_t x) {
+  for (std::int32_t i = 0; i < count; ++i)
+    if (tri_pos(T[i], x) >= 0) return true;
+  return false;
+}
+
+// Beyond test of q against triangle i of the star of s (filter first, then exact).
+GDEL_HD inline int star_side(const flip::Geo& g, const Tri& t, vid_t s, vid_t q, double* work) {
+  const vid_t v[5] = {s, t.v[0], t.v[1], t.v[2], q};
+  return g.orient4_any(v, work);
+}
+
+// Links the adjacency of k triangles with distinct directed edges by brute force
+// (used for tiny stars only).
+GDEL_HD inline void link_by_edges(Tri* T, int k) {
+  for (int i = 0; i < k; ++i)
+    for (int e = 0; e < 3; ++e) {
+      const vid_t a = T[i].v[(e + 1) % 3], b = T[i].v[(e + 2) % 3];
+      for (int j = 0; j < k; ++j) {
+        if (j == i) continue;
+        for (int f = 0; f < 3; ++f)
+          if (T[j].v[(f + 1) % 3] == b && T[j].v[(f + 2) % 3] == a) T[i].adj[e] = (j << 2) | f;
+      }
+    }
+}
+
+// The star of s in the 4-simplex (s, a, b, c, d): the 4 facets through s.
+GDEL_HD inline void star_simplex(const flip::Geo& g, Tri* T, std::uint8_t* S, vid_t s, const vid_t* abcd,
+                                 std::uint8_t state, double* work) {
+  const vid_t v[5] = {s, abcd[0], abcd[1], abcd[2], abcd[3]};
+  const bool flip = g.orient4_any(v, work) > 0;  // d beyond (a,b,c): reverse every face
+  for (int i = 0; i < 4; ++i) {
+    T[i].v[0] = abcd[face_vertex(i, 0)];
+    T[i].v[1] = abcd[face_vertex(i, flip ? 2 : 1)];
+    T[i].v[2] = abcd[face_vertex(i, flip ? 1 : 2)];
+    S[i] = state;
+  }
+  // face_vertex(3,·) = (0,1,2): unflipped means (a,b,c) with d beneath. The face table
+  // orients all four faces alike, so the others follow.
+  link_by_edges(T, 4);
+}
+
+GDEL_HD inline void star_move(Tri* T, std::uint8_t* S, std::int32_t from, std::int32_t to) {
+  T[to] = T[from];
+  S[to] = S[from];
+  for (int k = 0; k < 3; ++k) {
+    const std::int32_t a = T[to].adj[k];
+    T[a >> 2].adj[a & 3] = (to << 2) | k;
+  }
+  S[from] = kTriFree;
+}
+
+// Beneath-beyond insertion of q into the convex star of s (§4.5). Marks the beyond
+// triangles, walks the boundary of that disk creating the fan (q, u, v) in fresh
+// slots past `count`, reports the link vertices that leave the star (submerged) to
+// `gone(x)`, then closes the holes. Needs cap >= 2 * count + 2. Returns an InsertResult.
+template <class Gone>
+GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap, vid_t s,
+                        vid_t q, double* work, Gone gone) {
+  std::int32_t r = 0, first = -1;
+  for (std::int32_t i = 0; i < count; ++i) {
+    if (star_side(g, T[i], s, q, work) > 0) {
+      S[i] |= kTriBeyond;
+      ++r;
+      if (first < 0) first = i;
+    }
+  }
+  if (r == 0) return kDrowned;
+  auto restore = [&] {
+    for (std::int32_t i = 0; i < count; ++i)
+      S[i] &= std::uint8_t(~kTriBeyond);
+  };
+  if (r == count) {
+    restore();
+    return kStarBroken;
+  }
+  // a boundary edge (a beyond triangle with a non-beyond neighbour), and their number
+  std::int32_t t0 = -1, k0 = -1, edges = 0;
+  for (std::int32_t i = first; i < count; ++i) {
+    if (!is_beyond(S[i])) continue;
+    for (int k = 0; k < 3; ++k)
+      if (!is_beyond(S[T[i].adj[k] >> 2])) {
+        ++edges;
+        if (t0 < 0) {
+          t0 = i;
+          k0 = k;
+        }
+      }
+  }
+  if (t0 < 0) {
+    restore();
+    return kStarBroken;
+  }
+  // walk the hole boundary; boundary edge j = (u_j, v_j) with v_j = u_{j+1}
+  std::int32_t nb = 0;
+  std::int32_t cur = t0, ck = k0;
+  const std::int32_t guard = 3 * r + 3;
+  do {
+    if (count + nb >= cap || nb > guard) {
+      // undo: drop the fan built so far (outside back-references are rewritten below
+      // only on success, so nothing outside changed yet)
+      for (std::int32_t j = 0; j < nb; ++j) S[count + j] = kTriFree;
+      restore();
+      return count + nb >= cap ? kStarFull : kStarBroken;
+    }
+    const std::int32_t slot = count + nb;
+    Tri& n = T[slot];
+    n.v[0] = q;
+    n.v[1] = T[cur].v[(ck + 1) % 3];
+    n.v[2] = T[cur].v[(ck + 2) % 3];
+    n.adj[0] = T[cur].adj[ck];
+    S[slot] = kTriNew;
+    ++nb;
+    // next boundary edge: rotate around v = n.v[2] through beyond triangles
+    const vid_t v = n.v[2];
+    std::int32_t t = cur;
+    int p = (ck + 2) % 3;
+    for (std::int32_t steps = 0;; ++steps) {
+      const int e = (p + 2) % 3;  // edge (v, next vertex) of t
+      const std::int32_t a = T[t].adj[e];
+      if (!is_beyond(S[a >> 2])) {
+        cur = t;
+        ck = e;
+        break;
+      }
+      t = a >> 2;
+      p = tri_pos(T[t], v);
+      if (p < 0 || steps > r) {
+        for (std::int32_t j = 0; j < nb; ++j) S[count + j] = kTriFree;
+        restore();
+        return kStarBroken;
+      }
+    }
+  } while (!(cur == t0 && ck == k0));
+  if (nb != edges) {  // the beyond set is not a disk: the star was not convex
+    for (std::int32_t j = 0; j < nb; ++j) S[count + j] = kTriFree;
+    restore();
+    return kStarBroken;
+  }
+  // fan adjacency and outside back-references
+  for (std::int32_t j = 0; j < nb; ++j) {
+    Tri& n = T[count + j];
+    n.adj[1] = ((count + (j + 1) % nb) << 2) | 2;
+    n.adj[2] = ((count + (j + nb - 1) % nb) << 2) | 1;
+    const std::int32_t a = n.adj[0];
+    T[a >> 2].adj[a & 3] = ((count + j) << 2) | 0;
+  }
+  // submerged link vertices: on a beyond triangle, not on the boundary
+  for (std::int32_t i = 0; i < count; ++i) {
+    if (!is_beyond(S[i])) continue;
+    for (int k = 0; k < 3; ++k) {
+      const vid_t x = T[i].v[k];
+      bool on_boundary = false;
+      for (std::int32_t j = 0; j < nb && !on_boundary; ++j) on_boundary = T[count + j].v[1] == x;
+      if (on_boundary) continue;
+      bool seen = false;  // report once: from the first beyond triangle around x
+      for (std::int32_t j = 0; j < i && !seen; ++j) seen = is_beyond(S[j]) && tri_pos(T[j], x) >= 0;
+      if (!seen) gone(x);
+    }
+  }
+  // close the holes: move the last valid triangles into the beyond slots
+  std::int32_t lo = 0, hi = count + nb - 1;
+  for (;;) {
+    while (lo < hi && !is_beyond(S[lo])) ++lo;
+    while (hi > lo && is_beyond(S[hi])) {
+      S[hi] = kTriFree;
+      --hi;
+    }
+    if (lo >= hi) break;
+    star_move(T, S, hi, lo);
+    --hi;
+  }
+  const std::int32_t nc = count - r + nb;
+  for (std::int32_t i = nc; i < count + nb; ++i) S[i] = kTriFree;
+  count = nc;
+  return kInserted;
+}
+
+// Confinement proof (§4.6): v is drowned in the convex star of s (beneath every facet);
+// finds link vertices e, t0, t1, t2 with v in the cone from s over them. Returns false
+// only if the star is not convex around v.
+GDEL_HD inline bool star_proof(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t v, vid_t* out,
+                               double* work) {
+  if (count <= 0) return false;
+  const vid_t e = T[0].v[0];
+  for (std::int32_t i = 0; i < count; ++i) {
+    const Tri& t = T[i];
+    if (tri_pos(t, e) >= 0) continue;
+    bool ok = true;
+    for (int k = 0; k < 3 && ok; ++k) {
+      const vid_t ti = t.v[k], tj = t.v[(k + 1) % 3], tk = t.v[(k + 2) % 3];
+      const vid_t a[5] = {s, e, ti, tj, v};
+      const vid_t b[5] = {s, e, ti, tj, tk};
+      ok = g.orient4_any(a, work) == g.orient4_any(b, work);
+    }
+    if (ok) {
+      out[0] = e;
+      out[1] = t.v[0];
+      out[2] = t.v[1];
+      out[3] = t.v[2];
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace gdel::splay
