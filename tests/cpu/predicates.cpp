@@ -519,7 +519,7 @@ TEST(Predicates, DegenerateCasesMatchGmpAndSosIsConsistent) {
           ++em;
           if (sp != o.em_sos(5, k.id)) fail.add("power_sos brute force " + describe(k, 5));
         }
-        // all five cofactors zero -> the lift SoS fell back to E-M
+        // all five cofactors zero -> the lift SoS went on to the position terms
         bool all_zero = true;
         for (int i = 0; i < 5 && all_zero; ++i) {
           const double* q[4];

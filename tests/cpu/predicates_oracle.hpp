@@ -169,8 +169,10 @@ class Oracle {
     return 0;  // not reached: the full matching of rows 0..d-1 has coefficient +-1
   }
 
-  // Brute-force lifting perturbation: P(h + t e_i) - P(h) for each i in decreasing index
-  // order (linear in h), then E-M if all vanish. Loaded n = 5.
+  // Brute-force lifting-first perturbation (predicates.hpp): P(h + t e_i) - P(h) for each
+  // i in decreasing index order (linear in h); if all vanish (five coplanar points), the
+  // position perturbations x + d^(2^(3r+c)) in increasing exponent order, each first
+  // alone and then with one height perturbation (decreasing index). Loaded n = 5.
   int lift_sos(const std::int64_t* id) {
     const mpz_class base = lifted_value();
     if (sgn(base) != 0) return sgn(base);
@@ -184,7 +186,33 @@ class Oracle {
       const int s = sgn(v - base);
       if (s != 0) return s;
     }
-    return em_sos(5, id);
+    int rank[5];
+    for (int i = 0; i < 5; ++i) {
+      rank[i] = 0;
+      for (int j = 0; j < 5; ++j) rank[i] += id[j] < id[i];
+    }
+    static const auto m3 = build(5, 3);
+    for (const auto& S : m3) {
+      int unit_col[5] = {-1, -1, -1, -1, -1};
+      for (auto [r, c] : S) {
+        int row = 0;
+        while (rank[row] != r) ++row;
+        unit_col[row] = c;
+      }
+      for (int e = -1; e < 5; ++e) {  // -1: the pure term; else the height of order[e]
+        const int hrow = e < 0 ? -1 : order[e];
+        if (hrow >= 0 && unit_col[hrow] >= 0) continue;
+        for (int i = 0; i < 5; ++i)
+          for (int j = 0; j < 5; ++j) {
+            if (i == hrow) M_[i][j] = (j == 3) ? 1 : 0;
+            else if (unit_col[i] >= 0) M_[i][j] = (j == unit_col[i]) ? 1 : 0;
+            else M_[i][j] = j < 4 ? X[i][j] : mpz_class(1);
+          }
+        const int s = sgn(det(5));
+        if (s != 0) return -s;
+      }
+    }
+    return 0;  // not reached
   }
 
   mpz_class X[5][4];
@@ -194,12 +222,11 @@ class Oracle {
   // increasing exponent sum 2^(d r + c), i.e. decreasing magnitude; the empty one is
   // skipped (the unperturbed determinant).
   static const std::vector<std::vector<std::pair<int, int>>>& matchings(int n) {
-    static const auto m4 = build(4);
-    static const auto m5 = build(5);
+    static const auto m4 = build(4, 3);
+    static const auto m5 = build(5, 4);
     return n == 4 ? m4 : m5;
   }
-  static std::vector<std::vector<std::pair<int, int>>> build(int n) {
-    const int d = n - 1;
+  static std::vector<std::vector<std::pair<int, int>>> build(int n, int d) {
     std::vector<std::pair<std::uint64_t, std::vector<std::pair<int, int>>>> all;
     std::vector<std::pair<int, int>> cur;
     // recursive enumeration over rows
