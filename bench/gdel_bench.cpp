@@ -5,7 +5,7 @@
 //   gdel-bench [--dist uniform,gaussian,...] [--n 100000,1000000] [--methods LIST]
 //              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify]
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
-//   methods: gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
+//   methods: gdel3d-cuda, gdel3d-cpu, gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            cgal, cgal-par   (default: all available)
 #include <algorithm>
 #include <cstdio>
@@ -111,9 +111,10 @@ int main(int argc, char** argv) {
         r.method = m;
         r.n = n;
         std::vector<double> times;
-        if (m.rfind("gflip3d", 0) == 0) {
+        if (m.rfind("gflip3d", 0) == 0 || m.rfind("gdel3d", 0) == 0) {
+          const bool exact = m.rfind("gdel3d", 0) == 0;
           gdel::Options o;
-          o.algorithm = gdel::Algorithm::gflip3d;
+          o.algorithm = exact ? gdel::Algorithm::gdel3d : gdel::Algorithm::gflip3d;
           o.terminal_flipping = m.find("terminal") != std::string::npos;
           o.reorder_tets = std::getenv("GDEL_TET_REORDER") != nullptr;
           o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
@@ -126,7 +127,7 @@ int main(int argc, char** argv) {
           }
           r.tets = t.num_tets();
           r.flips = t.stats.flips23 + t.stats.flips32;
-          r.failed = t.stats.failed_vertices;
+          r.failed = exact ? t.stats.repair_failed_vertices : t.stats.failed_vertices;
           r.rounds = t.stats.rounds;
           r.iterations = t.stats.flip_iterations;
           r.peak = t.stats.peak_bytes;
@@ -138,6 +139,15 @@ int main(int argc, char** argv) {
           }
           r.flips_per_s = flip_s > 0 ? double(r.flips) / flip_s : 0;
           r.stages = st.str();
+          if (exact) {
+            double rep = 0;
+            for (auto& [name, s] : t.stats.stages)
+              if (name.find("repair") != std::string::npos) rep = s;
+            std::ostringstream nt;
+            nt << "repair " << rep << " s, stars built " << t.stats.stars_built << " pulled " << t.stats.stars_pulled
+               << ", rounds " << t.stats.splay_rounds;
+            r.note = nt.str();
+          }
           if (do_verify) {
             auto v = gdel::verify(pts, t.tets, {}, have_cuda ? gdel::Backend::Cuda : gdel::Backend::Cpu);
             r.non_ld = v.non_delaunay_facets;
@@ -147,7 +157,8 @@ int main(int argc, char** argv) {
             r.valid = v.bad_index == 0 && v.inverted_tets == 0 && v.overshared_facets == 0 &&
                       v.same_side_facets == 0 && v.hull_open_edges == 0 && v.unused_points == 0 &&
                       v.duplicate_vertices == 0 && v.euler_ok;
-            if (v.hull_reflex_edges) r.note = "reflex hull edges " + std::to_string(v.hull_reflex_edges);
+            if (exact) r.valid = v.delaunay() && v.degenerate_tets == 0;
+            if (v.hull_reflex_edges) r.note += " reflex hull edges " + std::to_string(v.hull_reflex_edges);
           }
         } else if (m == "cgal" || m == "cgal-par") {
           gdel::bench::PeerResult p;

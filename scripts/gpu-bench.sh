@@ -32,5 +32,11 @@ case "${1:-all}" in
       --methods gflip3d-cuda,gflip3d-terminal-cuda,cgal,cgal-par --repeat 1 --json "$out/flip-dists.json"
     run --dist uniform --n 100000,1000000 --methods gflip3d-cpu,cgal,cgal-par --repeat 1 --json "$out/flip-cpu.json"
     ;;
+  gdel3d)
+    run --dist uniform --n 100000,1000000,10000000 --methods gdel3d-cuda,cgal,cgal-par --repeat 1 \
+      --json "$out/gdel3d-uniform.json"
+    run --dist gaussian,thin_shell,grid,sphere,ball --n 1000000 --methods gdel3d-cuda,cgal,cgal-par --repeat 1 \
+      --json "$out/gdel3d-dists.json"
+    ;;
   *) run "$@" ;;
 esac

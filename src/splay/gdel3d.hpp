@@ -356,10 +356,10 @@ class GDel3D {
     Buffer<U64, B> gone(ctx_);
     build_failed(failed, gone);
     Buffer<U64, B> req(ctx_);
-    auto puller = [this](const Buffer<vid_t, B>& verts) { pull(verts); };
-    sp_.proofs(gone, req, puller);
+    sp_.set_source([this](const Buffer<vid_t, B>& verts) { pull(verts); });
+    sp_.proofs(gone, req);
     sp_.checks(req);
-    sp_.run(req, puller);
+    sp_.run(req);
     res_.splay = sp_.stats();
   }
 

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -169,10 +170,12 @@ class Splayer {
   }
 
   // Runs splaying rounds from the given requests (keys pair_key(target, vertex), any
-  // order, duplicates allowed) until no new request appears. `pull(list)` must create
-  // the stars of the vertices in `list` (a device buffer of vertex ids without stars).
-  template <class Pull>
-  void run(Buffer<U64, B>& req, Pull pull) {
+  // order, duplicates allowed) until no new request appears.
+  // The source of stars that do not exist yet: must create the stars of the vertices in
+  // the given device list (vertex ids without a star).
+  void set_source(std::function<void(const Buffer<vid_t, B>&)> pull) { pull_ = std::move(pull); }
+
+  void run(Buffer<U64, B>& req) {
     for (;;) {
       I64 n = static_cast<I64>(req.size());
       if (n > 0) {
@@ -180,7 +183,7 @@ class Splayer {
         n = static_cast<I64>(par::unique(ctx_, req.data(), static_cast<std::size_t>(n)));
         req.resize(static_cast<std::size_t>(n));
       }
-      if (n > 0) pull_targets(req, pull);
+      if (n > 0) pull_targets(req);
       if (debug_) std::fprintf(stderr, "  convexity violations: %lld, largest star %d triangles\n",
                                (long long)convexity_violations(),
                                nst_ ? par::reduce_max(ctx_, count_.data(), static_cast<std::size_t>(nst_), 0) : 0);
@@ -195,7 +198,7 @@ class Splayer {
       Buffer<U64, B> gone(ctx_);
       insert_round(req, gone);
       Buffer<U64, B> next(ctx_);
-      proofs(gone, next, pull);
+      proofs(gone, next);
       checks(next);
       req = std::move(next);
     }
@@ -240,8 +243,7 @@ class Splayer {
   }
 
   // (public for nvcc's extended lambdas)
-  template <class Pull>
-  void pull_targets(Buffer<U64, B>& req, Pull pull) {
+  void pull_targets(Buffer<U64, B>& req) {
     const I64 n = static_cast<I64>(req.size());
     const U64* rp = req.data();
     const std::int32_t* so = star_of_.data();
@@ -257,7 +259,7 @@ class Splayer {
     par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 i) { mp[i] = key_target(rp[ip[i]]); });
     miss.resize(k);
     ss_.stars_pulled += static_cast<I64>(k);
-    pull(miss);
+    pull_(miss);
   }
 
   // Drops requests already tried (history) or whose vertex is in the target's link;
@@ -375,8 +377,7 @@ class Splayer {
 
   // For every gone pair (s, v): the proof of v inside star s. v finite: requests
   // (v ← proof); v = ∞: remembered, and handed out by checks().
-  template <class Pull>
-  void proofs(const Buffer<U64, B>& gone_all, Buffer<U64, B>& next, Pull pull) {
+  void proofs(const Buffer<U64, B>& gone_all, Buffer<U64, B>& next) {
     // A proof is needed only where star v still holds s (§4.4); stars of v that do not
     // exist yet are pulled first (they hold s when T has the edge).
     const vid_t inf = g_.inf;
@@ -396,7 +397,7 @@ class Splayer {
       const std::size_t kr = par::copy_if(ctx_, rv, revc.data(), static_cast<std::size_t>(n0),
                                           [=] GDEL_HD(U64 k) { return k != ~U64(0); });
       revc.resize(kr);
-      if (kr > 0) pull_targets(revc, pull);
+      if (kr > 0) pull_targets(revc);
       const std::int32_t* so = star_of_.data();
       const StarView sv = view();
       gone.resize(static_cast<std::size_t>(n0));
@@ -556,6 +557,7 @@ class Splayer {
   Buffer<std::int32_t, B> error_;
   I64 nst_ = 0;
   I64 slots_ = 0;
+  std::function<void(const Buffer<vid_t, B>&)> pull_;
   bool debug_ = std::getenv("GDEL_SPLAY_DEBUG") != nullptr;
   SplayStats ss_;
 };
