@@ -15,6 +15,7 @@
 //     T's adjacency where both sides are kept, else by matching face keys.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -59,13 +60,13 @@ class GDel3D {
     const I64 ex = par::two_stage_signs(
         ctx, 4 * nt, sg,
         [=] GDEL_HD(I64 f) -> std::int8_t {
-          vid_t v[5];
+          vid_t v[5] = {0, 0, 0, 0, 0};
           if (!tuple(f, v)) return 0;
           return static_cast<std::int8_t>(g.orient4<false>(v, nullptr));
         },
         [=] GDEL_HD(I64 f, double* work) -> std::int8_t {
-          vid_t v[5];
-          tuple(f, v);
+          vid_t v[5] = {0, 0, 0, 0, 0};
+          if (!tuple(f, v)) return 0;
           return static_cast<std::int8_t>(g.orient4<true>(v, work));
         },
         geom::kPredicateWork);
@@ -83,9 +84,14 @@ class GDel3D {
     return ex;
   }
 
-  // Sorted keys (v << 32 | t) of the tets t of T incident to the vertices v with
-  // want[v] >= 0.
-  Buffer<U64, B> incidence(const std::int32_t* want) {
+  // Sorted keys (v << 32 | t) of the tets t of T incident to the vertices in `verts`.
+  Buffer<U64, B> incidence(const Buffer<vid_t, B>& verts) {
+    Buffer<std::int32_t, B> wanted(ctx_, static_cast<std::size_t>(m_ + 1));
+    std::int32_t* want = wanted.data();
+    par::fill(ctx_, want, wanted.size(), std::int32_t(-1));
+    const vid_t* vp = verts.data();
+    par::parallel_for(ctx_, static_cast<I64>(verts.size()),
+                      [=] GDEL_HD(I64 i) { want[vp[i]] = static_cast<std::int32_t>(i); });
     const mesh::MeshView mv = mesh_.view();
     const I64 nt = mesh_.size();
     Buffer<I64, B> cnt(ctx_, static_cast<std::size_t>(nt + 1));
@@ -130,12 +136,7 @@ class GDel3D {
   // Creates the stars of `verts` as they are in T (convex there).
   void pull(const Buffer<vid_t, B>& verts) {
     const I64 nv = static_cast<I64>(verts.size());
-    Buffer<std::int32_t, B> want(ctx_, static_cast<std::size_t>(m_ + 1));
-    std::int32_t* wp = want.data();
-    par::fill(ctx_, wp, want.size(), std::int32_t(-1));
-    const vid_t* vp = verts.data();
-    par::parallel_for(ctx_, nv, [=] GDEL_HD(I64 i) { wp[vp[i]] = static_cast<std::int32_t>(i); });
-    Buffer<U64, B> keys = incidence(wp);
+    Buffer<U64, B> keys = incidence(verts);
     I64 k = 0;
     Buffer<I64, B> heads = group_heads(keys, k);
     if (k != nv) throw std::runtime_error("gdel internal error: a vertex to pull has no tet in T");
@@ -214,13 +215,7 @@ class GDel3D {
   // Rebuilds the stars of the failed vertices; returns the gone pairs (drowned and
   // submerged) through `gone`.
   void build_failed(const Buffer<vid_t, B>& failed, Buffer<U64, B>& gone) {
-    const I64 nf = static_cast<I64>(failed.size());
-    Buffer<std::int32_t, B> want(ctx_, static_cast<std::size_t>(m_ + 1));
-    std::int32_t* wp = want.data();
-    par::fill(ctx_, wp, want.size(), std::int32_t(-1));
-    const vid_t* fp = failed.data();
-    par::parallel_for(ctx_, nf, [=] GDEL_HD(I64 i) { wp[fp[i]] = static_cast<std::int32_t>(i); });
-    Buffer<U64, B> inc = incidence(wp);
+    Buffer<U64, B> inc = incidence(failed);
     I64 k = 0;
     Buffer<I64, B> ih = group_heads(inc, k);
     const U64* ip = inc.data();
@@ -345,7 +340,16 @@ class GDel3D {
     const mesh::MeshView mv = mesh_.view();
     const I64 nt = mesh_.size();
     Buffer<std::int8_t, B> fv(ctx_, static_cast<std::size_t>(m_));
+    const bool dbg = std::getenv("GDEL_SPLAY_DEBUG") != nullptr;
+    auto t0 = std::chrono::steady_clock::now();
+    auto lap = [&](const char* what) {
+      if (!dbg) return;
+      ctx_.synchronize();
+      std::fprintf(stderr, "gdel3d %s: %.3f s\n", what,
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    };
     res_.exact_evaluations += failed_flags(ctx_, mv, nt, g_, m_, fv.data());
+    lap("failed vertices");
     const std::int8_t* fvp = fv.data();
     Buffer<vid_t, B> failed(ctx_, static_cast<std::size_t>(m_));
     const std::size_t nf = par::select_indices(ctx_, static_cast<std::size_t>(m_), failed.data(),
@@ -355,11 +359,13 @@ class GDel3D {
     if (nf == 0) return;
     Buffer<U64, B> gone(ctx_);
     build_failed(failed, gone);
+    lap("stars of failed vertices");
     Buffer<U64, B> req(ctx_);
     sp_.set_source([this](const Buffer<vid_t, B>& verts) { pull(verts); });
     sp_.proofs(gone, req);
     sp_.checks(req);
     sp_.run(req);
+    lap("splaying rounds");
     res_.splay = sp_.stats();
   }
 
@@ -422,14 +428,14 @@ class GDel3D {
     res_.exact_evaluations += par::two_stage_signs(
         ctx_, slots, sfp,
         [=] GDEL_HD(I64 q) -> std::int8_t {
-          vid_t v[4];
+          vid_t v[4] = {0, 0, 0, 0};
           if (!s_candidate(q, v)) return 0;
           const int s = geom::orient3d_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]));
           return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
         },
         [=] GDEL_HD(I64 q, double* work) -> std::int8_t {
-          vid_t v[4];
-          s_candidate(q, v);
+          vid_t v[4] = {0, 0, 0, 0};
+          if (!s_candidate(q, v)) return 0;
           return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
         },
         geom::kPredicateWork);

@@ -184,7 +184,7 @@ class Splayer {
         req.resize(static_cast<std::size_t>(n));
       }
       if (n > 0) pull_targets(req);
-      if (debug_) std::fprintf(stderr, "  convexity violations: %lld, largest star %d triangles\n",
+      if (debug_ > 1) std::fprintf(stderr, "  convexity violations: %lld, largest star %d triangles\n",
                                (long long)convexity_violations(),
                                nst_ ? par::reduce_max(ctx_, count_.data(), static_cast<std::size_t>(nst_), 0) : 0);
       const I64 n_raw = n;
@@ -558,7 +558,8 @@ class Splayer {
   I64 nst_ = 0;
   I64 slots_ = 0;
   std::function<void(const Buffer<vid_t, B>&)> pull_;
-  bool debug_ = std::getenv("GDEL_SPLAY_DEBUG") != nullptr;
+  // GDEL_SPLAY_DEBUG=1: a line per round; 2: also an O(k^2) convexity check of every star
+  int debug_ = std::getenv("GDEL_SPLAY_DEBUG") ? std::atoi(std::getenv("GDEL_SPLAY_DEBUG")) : 0;
   SplayStats ss_;
 };
 

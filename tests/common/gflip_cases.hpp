@@ -27,7 +27,9 @@ inline void expect_flip_output_valid(const std::vector<double>& pts, const Trian
   EXPECT_EQ(r.overshared_facets, 0);
   EXPECT_EQ(r.same_side_facets, 0);
   EXPECT_EQ(r.hull_open_edges, 0);
-  if (!terminal) EXPECT_EQ(r.hull_reflex_edges, 0);
+  if (!terminal) {
+    EXPECT_EQ(r.hull_reflex_edges, 0);
+  }
   EXPECT_EQ(r.unused_points, 0);
   EXPECT_EQ(r.duplicate_vertices, 0);
   EXPECT_EQ(r.euler, 1);
@@ -49,7 +51,9 @@ inline void expect_flip_output_valid(const std::vector<double>& pts, const Trian
     }
   EXPECT_EQ(static_cast<std::int64_t>(hull), r.hull_facets);
   // failed vertices cover every non-locally-Delaunay facet
-  if (r.non_delaunay_facets > 0) EXPECT_GT(t.failed_vertices.size(), 0u);
+  if (r.non_delaunay_facets > 0) {
+    EXPECT_GT(t.failed_vertices.size(), 0u);
+  }
 }
 
 inline void gflip_generator_cases(Backend b, std::size_t n) {

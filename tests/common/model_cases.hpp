@@ -1,12 +1,13 @@
 // Real scanned models (CGAL's demo data, fetched by scripts/fetch-models.sh into
-// .deps/models): gFlip3D's output must be a valid triangulation of their convex hull.
+// .deps/models): gFlip3D's output must be a valid triangulation of their convex hull,
+// gDel3D's the exact Delaunay triangulation without flat tets.
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "common/gflip_cases.hpp"
+#include "common/gdel3d_cases.hpp"
 #include "io/io.hpp"
 
 namespace gdel::test {
@@ -30,6 +31,8 @@ inline void model_cases(Backend b) {
     o.backend = b;
     Triangulation t = delaunay(pts, o);
     expect_flip_output_valid(pts, t, b);
+    o.algorithm = Algorithm::gdel3d;
+    expect_exact_delaunay(pts, delaunay(pts, o), b);
   }
 }
 

@@ -23,6 +23,8 @@ TEST(GDel3DCgal, SameTetsAsCgalOnGeneralPosition) {
     // and the gFlip3D result alone differs only where it reported failed vertices
     o.algorithm = gdel::Algorithm::gflip3d;
     auto f = gdel::delaunay(pts, o);
-    if (f.failed_vertices.empty()) EXPECT_EQ(f.num_tets(), t.num_tets());
+    if (f.failed_vertices.empty()) {
+      EXPECT_EQ(f.num_tets(), t.num_tets());
+    }
   }
 }
