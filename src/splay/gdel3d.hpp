@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include "flip/flip_kernels.hpp"
@@ -249,10 +250,44 @@ class GDel3D {
       gvp[j] = key_target(lp[lhp[j]]);
       cp[j] = static_cast<std::int32_t>(4 * (lhp[j + 1] - lhp[j]) + 8);
     });
+    if (std::getenv("GDEL_SPLAY_DEBUG"))
+      std::fprintf(stderr, "gdel3d: %lld failed stars, largest link %d vertices, %lld tets around them\n",
+                   (long long)k, par::reduce_max(ctx_, cp, static_cast<std::size_t>(k), std::int32_t(0)) / 4 - 2,
+                   (long long)ni);
     const I64 s0 = sp_.add_stars(gv, caps);
     res_.stars_built = k;
     // the neighbour sets are tried pairs
     sp_.add_history(lk);
+    // insertion order: nearest first (the order changes only the work, never the
+    // result: the convex star over a point set is unique). T's star of a failed vertex
+    // can be huge on degenerate input (a fan of flat tets on a coplanar hull face);
+    // inserting the near neighbours first makes the far ones drown against a small star
+    // instead of growing it: O(k * true degree) instead of O(k^2).
+    Buffer<U64, B> okey(ctx_, static_cast<std::size_t>(nl));
+    Buffer<vid_t, B> ordv(ctx_, static_cast<std::size_t>(nl));
+    {
+      U64* okp = okey.data();
+      vid_t* ovp = ordv.data();
+      const flip::Geo gg = g_;
+      const vid_t inf = g_.inf;
+      par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 i) {
+        const vid_t v = key_target(lp[i]), x = key_vertex(lp[i]);
+        std::uint32_t bits = 0x7f800000u;  // +inf: ∞ last
+        if (x != inf) {
+          double d2 = 0;
+          for (int c = 0; c < 3; ++c) {
+            const double t = gg.p(x)[c] - gg.p(v)[c];
+            d2 += t * t;
+          }
+          const float f = static_cast<float>(d2);
+          std::memcpy(&bits, &f, sizeof bits);
+        }
+        okp[i] = (U64(static_cast<std::uint32_t>(v)) << 32) | bits;
+        ovp[i] = x;
+      });
+      par::sort_pairs(ctx_, okp, ovp, static_cast<std::size_t>(nl));  // stable: ties by id
+    }
+    const vid_t* ov = ordv.data();
     // room for gone pairs
     Buffer<I64, B> room(ctx_, static_cast<std::size_t>(k + 1));
     I64* rmp = room.data();
@@ -279,11 +314,11 @@ class GDel3D {
         return;
       }
       vid_t first[4];
-      for (int q = 0; q < 4; ++q) first[q] = key_vertex(lp[a + q]);
+      for (int q = 0; q < 4; ++q) first[q] = ov[a + q];
       star_simplex(g, T, S, me, first, kTriNew, work);
       std::int32_t count = 4;
       for (I64 i = a + 4; i < b; ++i) {
-        const vid_t q = key_vertex(lp[i]);
+        const vid_t q = ov[i];
         const int r = star_insert(g, T, S, count, sv.cap[s], me, q, work, [&](vid_t x) {
           if (gk < gend) gp[gk++] = pair_key(me, x);
           else ep[0] = 3;
