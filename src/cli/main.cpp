@@ -73,7 +73,9 @@ int main(int argc, char** argv) {
   del->add_option("--example", example, "use generated points instead of a file: DIST:N (uniform, gaussian, ball, "
                                         "thin_shell, grid, sphere, skew_lines)");
   del->add_option("-o,--output", out, "output base or OUT.ele")->required();
-  del->add_option("--algorithm", algorithm, "auto | gflip3d | gdel3d")->capture_default_str();
+  del->add_option("--algorithm", algorithm,
+                  "auto (= gdel3d: exact Delaunay) | gdel3d | gflip3d (near-Delaunay, unrepaired)")
+      ->capture_default_str();
   del->add_option("--device", device, "cpu | cuda | auto")->capture_default_str();
   del->add_option("--seed", seed, "seed for --example")->capture_default_str();
   del->add_flag("--check", check, "verify the result exactly; exit 5 if it is not Delaunay");
