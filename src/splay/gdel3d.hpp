@@ -258,8 +258,8 @@ class GDel3D {
     res_.stars_built = k;
     // the neighbour sets are tried pairs
     sp_.add_history(lk);
-    // insertion order: nearest first (the order changes only the work, never the
-    // result: the convex star over a point set is unique). T's star of a failed vertex
+    // insertion order: ∞, then nearest first (the order changes only the work, never
+    // the result: the convex star over a point set is unique). T's star of a failed vertex
     // can be huge on degenerate input (a fan of flat tets on a coplanar hull face);
     // inserting the near neighbours first makes the far ones drown against a small star
     // instead of growing it: O(k * true degree) instead of O(k^2).
@@ -272,7 +272,9 @@ class GDel3D {
       const vid_t inf = g_.inf;
       par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 i) {
         const vid_t v = key_target(lp[i]), x = key_vertex(lp[i]);
-        std::uint32_t bits = 0x7f800000u;  // +inf: ∞ last
+        std::uint32_t bits = 0;  // ∞ first: then no star holds upper facets (∞ is beyond
+                                 // them), every tet is positive in 3-D, and insertion can
+                                 // walk instead of scanning (star_insert)
         if (x != inf) {
           double d2 = 0;
           for (int c = 0; c < 3; ++c) {
@@ -351,7 +353,7 @@ class GDel3D {
           const int p = tri_pos(lt, T[i].v[0]);
           in_t = p >= 0 && lt.v[(p + 1) % 3] == T[i].v[1] && lt.v[(p + 2) % 3] == T[i].v[2];
         }
-        S[i] = in_t ? kTriChecked : kTriNew;
+        set_kind(S[i], in_t ? kTriChecked : kTriNew);
       }
     });
     sp_.throw_if_error("building a failed vertex's star");

@@ -491,7 +491,7 @@ class Splayer {
       const std::uint8_t* S = sv.state + sv.begin[s];
       I64 c = 0;
       for (std::int32_t i = 0; i < sv.count[s]; ++i) {
-        if (S[i] == kTriNew) c += 9;
+        if (tri_kind(S[i]) == kTriNew) c += 9;
         if (ni > 0 && tri_pos(T[i], inf) >= 0) c += 12;
       }
       cp[s] = c;
@@ -508,8 +508,8 @@ class Splayer {
       const I64 kend = cp[s + 1];
       for (std::int32_t i = 0; i < sv.count[s]; ++i) {
         const vid_t* v = T[i].v;
-        if (S[i] == kTriNew) {
-          S[i] = kTriChecked;
+        if (tri_kind(S[i]) == kTriNew) {
+          set_kind(S[i], kTriChecked);
           const vid_t tet[4] = {me, v[0], v[1], v[2]};
           for (int a = 1; a < 4; ++a)
             for (int b = 0; b < 4; ++b) {

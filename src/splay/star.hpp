@@ -25,10 +25,44 @@ enum TriState : std::uint8_t {
   kTriFree = 0,
   kTriChecked = 1,  // consistency already checked (or known from the input triangulation)
   kTriNew = 2,      // created since the last consistency check
-  kTriBeyond = 4,   // flag bit, transient: beyond the point being inserted
+  kTriBeyond = 4,       // flag bit, transient: beyond the point being inserted
+  kTriNonPositive = 8,  // flag bit: the tet (s, a, b, c) is not positive in the 3-D embedding
+  kTriTested = 16,      // flag bit, transient: tested and not beyond (flood fill)
 };
+inline constexpr std::uint8_t kTriKind = 3;  // Free / Checked / New
 
 GDEL_HD inline bool is_beyond(std::uint8_t s) { return (s & kTriBeyond) != 0; }
+GDEL_HD inline std::uint8_t tri_kind(std::uint8_t s) { return s & kTriKind; }
+GDEL_HD inline void set_kind(std::uint8_t& s, std::uint8_t kind) { s = std::uint8_t((s & ~kTriKind) | kind); }
+
+// 3-D orientation of (a, b, c, d) with ∞ embedded as in gFlip3D (Geo::orient): never 0.
+GDEL_HD inline int orient_any(const flip::Geo& g, vid_t a, vid_t b, vid_t c, vid_t d, double* work) {
+  const int r = g.orient_fast(a, b, c, d);
+  return r != par::kUndecided ? r : g.orient_exact(a, b, c, d, work);
+}
+GDEL_HD inline std::uint8_t positivity_flag(const flip::Geo& g, vid_t s, const Tri& t, double* work) {
+  return orient_any(g, s, t.v[0], t.v[1], t.v[2], work) > 0 ? std::uint8_t(0) : std::uint8_t(kTriNonPositive);
+}
+
+// Visibility walk on the link of s towards the ray s->q (q finite, not in the link):
+// the triangle whose 3-D cone from s contains q's direction, or -1 after `count` steps.
+// Meaningful when every tet of the star is positive in the 3-D embedding: the star is
+// then the projection of a convex lifted star, a partition of the directions around s.
+GDEL_HD inline std::int32_t star_locate(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t q,
+                                        std::int32_t t, double* work) {
+  for (std::int32_t step = 0; step <= count; ++step) {
+    bool moved = false;
+    for (int k = 0; k < 3 && !moved; ++k) {
+      // q beyond the plane (s, b, c) of edge k, on the other side from v[k]
+      if (orient_any(g, s, T[t].v[(k + 1) % 3], T[t].v[(k + 2) % 3], q, work) < 0) {
+        t = T[t].adj[k] >> 2;
+        moved = true;
+      }
+    }
+    if (!moved) return t;
+  }
+  return -1;
+}
 
 enum InsertResult : int { kInserted = 0, kDrowned = 1, kStarBroken = -1, kStarFull = -2 };
 
@@ -71,7 +105,7 @@ GDEL_HD inline void star_simplex(const flip::Geo& g, Tri* T, std::uint8_t* S, vi
     T[i].v[0] = abcd[face_vertex(i, 0)];
     T[i].v[1] = abcd[face_vertex(i, flip ? 2 : 1)];
     T[i].v[2] = abcd[face_vertex(i, flip ? 1 : 2)];
-    S[i] = state;
+    S[i] = std::uint8_t(state | positivity_flag(g, s, T[i], work));
   }
   // face_vertex(3,·) = (0,1,2): unflipped means (a,b,c) with d beneath. The face table
   // orients all four faces alike, so the others follow.
@@ -94,16 +128,55 @@ GDEL_HD inline void star_move(Tri* T, std::uint8_t* S, std::int32_t from, std::i
 // `gone(x)`, then closes the holes. Needs cap >= 2 * count + 2. Returns an InsertResult.
 template <class Gone>
 GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap, vid_t s,
-                        vid_t q, double* work, Gone gone) {
+                        vid_t q, double* work, Gone gone, std::int32_t hint = 0) {
   std::int32_t r = 0, first = -1;
-  for (std::int32_t i = 0; i < count; ++i) {
-    if (star_side(g, T[i], s, q, work) > 0) {
-      S[i] |= kTriBeyond;
-      ++r;
-      if (first < 0) first = i;
-    }
+  // Fast path (every tet of the star positive in 3-D, q finite): locate the triangle
+  // whose cone holds q's direction; if q conflicts with any tet of s it conflicts with
+  // that one (the segment sq becomes a Delaunay edge, so the old tets it crosses are in
+  // conflict), so "not beyond" there means drowned; else flood the beyond set from it.
+  bool fast = q != g.inf && count > 0;
+  for (std::int32_t i = 0; i < count && fast; ++i) fast = (S[i] & kTriNonPositive) == 0;
+  std::int32_t t = -1;
+  if (fast) {
+    t = star_locate(g, T, count, s, q, hint >= 0 && hint < count ? hint : 0, work);
+    fast = t >= 0;
   }
-  if (r == 0) return kDrowned;
+  if (fast) {
+    if (star_side(g, T[t], s, q, work) <= 0) return kDrowned;
+    // flood fill; the stack lives in the free slots past `count` (cap >= 2 count + 2
+    // slots of 6 ints each hold far more than count entries)
+    std::int32_t* stack = reinterpret_cast<std::int32_t*>(T + count);
+    std::int32_t top = 0;
+    S[t] |= kTriBeyond;
+    r = 1;
+    first = t;
+    stack[top++] = t;
+    while (top > 0) {
+      const std::int32_t x = stack[--top];
+      for (int k = 0; k < 3; ++k) {
+        const std::int32_t y = T[x].adj[k] >> 2;
+        if (S[y] & (kTriBeyond | kTriTested)) continue;
+        if (star_side(g, T[y], s, q, work) > 0) {
+          S[y] |= kTriBeyond;
+          ++r;
+          if (y < first) first = y;
+          stack[top++] = y;
+        } else {
+          S[y] |= kTriTested;
+        }
+      }
+    }
+    for (std::int32_t i = 0; i < count; ++i) S[i] &= std::uint8_t(~kTriTested);
+  } else {
+    for (std::int32_t i = 0; i < count; ++i) {
+      if (star_side(g, T[i], s, q, work) > 0) {
+        S[i] |= kTriBeyond;
+        ++r;
+        if (first < 0) first = i;
+      }
+    }
+    if (r == 0) return kDrowned;
+  }
   auto restore = [&] {
     for (std::int32_t i = 0; i < count; ++i)
       S[i] &= std::uint8_t(~kTriBeyond);
@@ -147,7 +220,7 @@ GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_
     n.v[1] = T[cur].v[(ck + 1) % 3];
     n.v[2] = T[cur].v[(ck + 2) % 3];
     n.adj[0] = T[cur].adj[ck];
-    S[slot] = kTriNew;
+    S[slot] = std::uint8_t(kTriNew | positivity_flag(g, s, n, work));
     ++nb;
     // next boundary edge: rotate around v = n.v[2] through beyond triangles
     const vid_t v = n.v[2];
