@@ -81,7 +81,6 @@ class GDel3D {
         if (x != inf) fvp[x] = 1;
       }
     });
-    (void)inf;
     return ex;
   }
 
@@ -319,28 +318,8 @@ class GDel3D {
       for (int q = 0; q < 4; ++q) first[q] = ov[a + q];
       star_simplex(g, T, S, me, first, kTriNew, work);
       std::int32_t count = 4;
-      for (I64 i = a + 4; i < b; ++i) {
-        const vid_t q = ov[i];
-        const int r = star_insert(g, T, S, count, sv.cap[s], me, q, work, [&](vid_t x) {
-          if (gk < gend) gp[gk++] = pair_key(me, x);
-          else ep[0] = 3;
-        });
-        if (r == kDrowned) {
-          if (gk < gend) gp[gk++] = pair_key(me, q);
-          else ep[0] = 3;
-        } else if (r != kInserted) {
-          ep[0] = r == kStarFull ? 2 : 1;
-#ifndef __CUDA_ARCH__
-          if (std::getenv("GDEL_SPLAY_DEBUG")) {
-            std::fprintf(stderr, "broken star %d inserting %d (r=%d): %d triangles\n", me, q, r, count);
-            for (std::int32_t i2 = 0; i2 < count; ++i2)
-              std::fprintf(stderr, "  %d %d %d side %d adj %d %d %d\n", T[i2].v[0], T[i2].v[1], T[i2].v[2],
-                           star_side(g, T[i2], me, q, work), T[i2].adj[0], T[i2].adj[1], T[i2].adj[2]);
-          }
-#endif
-          break;
-        }
-      }
+      for (I64 i = a + 4; i < b; ++i)
+        insert_recording(g, T, S, count, sv.cap[s], me, ov[i], work, gp, gk, gend, ep);
       sv.count[s] = count;
       up[j] = gk - rmp[j];
       // triangles that are tets of T need no check
@@ -357,22 +336,10 @@ class GDel3D {
       }
     });
     sp_.throw_if_error("building a failed vertex's star");
-    Buffer<I64, B> off(ctx_, static_cast<std::size_t>(k + 1));
-    I64* op = off.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) { op[j] = up[j]; });
-    const I64 ng = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(k));
-    gone.resize(static_cast<std::size_t>(ng));
-    U64* out = gone.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
-      for (I64 i = 0; i < up[j]; ++i) out[op[j] + i] = gp[rmp[j] + i];
-    });
-    if (ng > 0) {
-      par::sort_keys(ctx_, out, static_cast<std::size_t>(ng));
-      gone.resize(par::unique(ctx_, out, static_cast<std::size_t>(ng)));
-    }
+    gone = sp_.pack_pairs(gp, rmp, up, k);
   }
 
-  // Steps 1-3. Returns the number of failed vertices.
+  // Steps 1-3.
   void repair() {
     const mesh::MeshView mv = mesh_.view();
     const I64 nt = mesh_.size();

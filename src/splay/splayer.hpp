@@ -51,6 +51,21 @@ GDEL_HD inline bool sorted_contains(const U64* a, I64 n, U64 k) {
   return lo < n && a[lo] == k;
 }
 
+// Inserts q into the star of s (star_insert) and records in out[k, kend) the pair
+// (s, x) of every vertex x that left the star, and (s, q) if q drowned. Running out of
+// room or a broken star sets *err.
+GDEL_HD inline void insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count,
+                                     std::int32_t cap, vid_t s, vid_t q, double* work, U64* out, I64& k, I64 kend,
+                                     std::int32_t* err) {
+  auto record = [&](vid_t x) {
+    if (k < kend) out[k++] = pair_key(s, x);
+    else *err = 3;
+  };
+  const int r = star_insert(g, T, S, count, cap, s, q, work, record);
+  if (r == kDrowned) record(q);
+  else if (r != kInserted) *err = r == kStarFull ? 2 : 1;
+}
+
 // Plain pointers to the stars, for kernels.
 struct StarView {
   vid_t* vert;          // star -> its vertex
@@ -62,14 +77,14 @@ struct StarView {
 };
 
 struct SplayStats {
-  I64 rounds = 0, insertions = 0, drowned = 0, submerged = 0, stars_pulled = 0, proofs = 0;
+  I64 rounds = 0, insertions = 0, stars_pulled = 0, proofs = 0;
 };
 
 template <class B>
 class Splayer {
  public:
   Splayer(Context<B>& ctx, flip::Geo g, vid_t num_vertices)
-      : ctx_(ctx), g_(g), nv_(num_vertices), star_of_(ctx, static_cast<std::size_t>(num_vertices)), vert_(ctx),
+      : ctx_(ctx), g_(g), star_of_(ctx, static_cast<std::size_t>(num_vertices)), vert_(ctx),
         begin_(ctx), cap_(ctx), count_(ctx), tri_(ctx), state_(ctx), history_(ctx), inf_proof_key_(ctx),
         inf_proof_(ctx), error_(ctx, 1) {
     par::fill(ctx, star_of_.data(), star_of_.size(), std::int32_t(-1));
@@ -213,10 +228,6 @@ class Splayer {
                                where + ", code " + std::to_string(e) + ")");
   }
 
-  void set_error(std::int32_t code) {
-    std::int32_t* ep = error_.data();
-    par::parallel_for(ctx_, 1, [=] GDEL_HD(I64) { ep[0] = code; });
-  }
   std::int32_t* error_ptr() { return error_.data(); }
 
   // Debug: number of (star, triangle, link vertex) triples where the link vertex is
@@ -340,39 +351,32 @@ class Splayer {
       std::int32_t count = sv.count[s];
       I64 k = rmp[j];
       const I64 kend = rmp[j + 1];
-      for (I64 i = a; i < b; ++i) {
-        const vid_t q = key_vertex(rp[i]);
-        const int r = star_insert(g, T, S, count, sv.cap[s], sv_vert, q, work, [&](vid_t x) {
-          if (k < kend) gp[k++] = pair_key(sv_vert, x);
-          else ep[0] = 3;
-        });
-        if (r == kDrowned) {
-          if (k < kend) gp[k++] = pair_key(sv_vert, q);
-          else ep[0] = 3;
-        } else if (r != kInserted) {
-          ep[0] = r == kStarFull ? 2 : 1;
-        }
-      }
+      for (I64 i = a; i < b; ++i)
+        insert_recording(g, T, S, count, sv.cap[s], sv_vert, key_vertex(rp[i]), work, gp, k, kend, ep);
       sv.count[s] = count;
       up[j] = k - rmp[j];
     });
     throw_if_error("insertion");
-    // compact the gone pairs
-    Buffer<U64, B> packed(ctx_, static_cast<std::size_t>(std::max<I64>(total, 1)));
-    U64* pk = packed.data();
-    Buffer<I64, B> off(ctx_, static_cast<std::size_t>(nh + 1));
+    gone = pack_pairs(gp, rmp, up, static_cast<I64>(nh));
+  }
+
+  // The pairs recorded per item j in raw[room[j], room[j] + used[j]), gathered, sorted
+  // and made unique.
+  Buffer<U64, B> pack_pairs(const U64* raw, const I64* room, const I64* used, I64 items) {
+    Buffer<I64, B> off(ctx_, static_cast<std::size_t>(items + 1));
     I64* op = off.data();
-    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_HD(I64 j) { op[j] = up[j]; });
-    const I64 ng = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(nh));
-    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_HD(I64 j) {
-      for (I64 i = 0; i < up[j]; ++i) pk[op[j] + i] = gp[rmp[j] + i];
+    par::parallel_for(ctx_, items, [=] GDEL_HD(I64 j) { op[j] = used[j]; });
+    const I64 n = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(items));
+    Buffer<U64, B> packed(ctx_, static_cast<std::size_t>(n));
+    U64* pk = packed.data();
+    par::parallel_for(ctx_, items, [=] GDEL_HD(I64 j) {
+      for (I64 i = 0; i < used[j]; ++i) pk[op[j] + i] = raw[room[j] + i];
     });
-    packed.resize(static_cast<std::size_t>(ng));
-    if (ng > 0) {
-      par::sort_keys(ctx_, packed.data(), static_cast<std::size_t>(ng));
-      packed.resize(par::unique(ctx_, packed.data(), static_cast<std::size_t>(ng)));
+    if (n > 0) {
+      par::sort_keys(ctx_, pk, static_cast<std::size_t>(n));
+      packed.resize(par::unique(ctx_, pk, static_cast<std::size_t>(n)));
     }
-    gone = std::move(packed);
+    return packed;
   }
 
   // For every gone pair (s, v): the proof of v inside star s. v finite: requests
@@ -544,7 +548,6 @@ class Splayer {
  private:
   Context<B>& ctx_;
   flip::Geo g_;
-  vid_t nv_;
   Buffer<std::int32_t, B> star_of_;
   Buffer<vid_t, B> vert_;
   Buffer<I64, B> begin_;
