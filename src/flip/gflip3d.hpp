@@ -178,6 +178,15 @@ class GFlip3D {
   }
 
   void init() {
+    vid_t t0[4];
+    first_tetrahedron(t0);
+    build_initial(t0);
+  }
+
+  // The first tetrahedron t0 (positive; DegenerateInput when every point is coplanar)
+  // and the kernel point K strictly inside it, stored as point n. Also the seed of
+  // gStar4D, which needs the same degeneracy check and a K.
+  void first_tetrahedron(vid_t* t0) {
     if (n_ < 4) throw DegenerateInput("need at least 4 distinct points, got " + std::to_string(n_));
     const double* X = xyz_.data();
     inv_scale_ = inverse_scale();
@@ -225,9 +234,14 @@ class GFlip3D {
       s = exact_orient_host(a, b, c, d);
     }
     if (s < 0) std::swap(c, d);
-    const vid_t t0[4] = {vid_t(a), vid_t(b), vid_t(c), vid_t(d)};
+    t0[0] = vid_t(a);
+    t0[1] = vid_t(b);
+    t0[2] = vid_t(c);
+    t0[3] = vid_t(d);
     set_kernel_point(t0);
+  }
 
+  void build_initial(const vid_t* t0) {
     // 5 tets: t0 and, for each face i of t0, (face reversed, ∞).
     const vid_t inf = static_cast<vid_t>(n_);
     std::vector<mesh::Tet> tets(5);

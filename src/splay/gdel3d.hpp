@@ -119,26 +119,12 @@ class GDel3D {
     return keys;
   }
 
-  // Per-vertex group starts in sorted incidence keys; heads[j] for j in [0, k], k groups.
-  Buffer<I64, B> group_heads(const Buffer<U64, B>& keys, I64& k) {
-    const I64 n = static_cast<I64>(keys.size());
-    const U64* kp = keys.data();
-    Buffer<I64, B> heads(ctx_, static_cast<std::size_t>(n + 1));
-    k = static_cast<I64>(par::select_indices(ctx_, static_cast<std::size_t>(n), heads.data(), [=] GDEL_HD(I64 i) {
-      return i == 0 || key_target(kp[i - 1]) != key_target(kp[i]);
-    }));
-    I64* hp = heads.data();
-    const I64 kk = k;
-    par::parallel_for(ctx_, 1, [=] GDEL_HD(I64) { hp[kk] = n; });
-    return heads;
-  }
-
   // Creates the stars of `verts` as they are in T (convex there).
   void pull(const Buffer<vid_t, B>& verts) {
     const I64 nv = static_cast<I64>(verts.size());
     Buffer<U64, B> keys = incidence(verts);
     I64 k = 0;
-    Buffer<I64, B> heads = group_heads(keys, k);
+    Buffer<I64, B> heads = sp_.group_heads(keys, k);
     if (k != nv) throw std::runtime_error("gdel internal error: a vertex to pull has no tet in T");
     // stars in the order of the groups (ascending vertex)
     Buffer<vid_t, B> gv(ctx_, static_cast<std::size_t>(k));
@@ -212,12 +198,12 @@ class GDel3D {
     out.v[2] = mv.tet[t].v[face_vertex(j, 1)];
   }
 
-  // Rebuilds the stars of the failed vertices; returns the gone pairs (drowned and
-  // submerged) through `gone`.
+  // Rebuilds the stars of the failed vertices from their T-neighbours; returns the gone
+  // pairs (drowned and submerged) through `gone`.
   void build_failed(const Buffer<vid_t, B>& failed, Buffer<U64, B>& gone) {
     Buffer<U64, B> inc = incidence(failed);
     I64 k = 0;
-    Buffer<I64, B> ih = group_heads(inc, k);
+    Buffer<I64, B> ih = sp_.group_heads(inc, k);
     const U64* ip = inc.data();
     const I64* ihp = ih.data();
     const mesh::MeshView mv = mesh_.view();
@@ -235,96 +221,21 @@ class GDel3D {
       }
     });
     par::sort_keys(ctx_, lp, static_cast<std::size_t>(3 * ni));
-    const I64 nl = static_cast<I64>(par::unique(ctx_, lp, static_cast<std::size_t>(3 * ni)));
-    lk.resize(static_cast<std::size_t>(nl));
-    I64 k2 = 0;
-    Buffer<I64, B> lh = group_heads(lk, k2);
-    const I64* lhp = lh.data();
-    // stars: group j of lk and of inc are the same vertex (both sorted by vertex)
-    Buffer<vid_t, B> gv(ctx_, static_cast<std::size_t>(k));
-    Buffer<std::int32_t, B> caps(ctx_, static_cast<std::size_t>(k));
-    vid_t* gvp = gv.data();
-    std::int32_t* cp = caps.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
-      gvp[j] = key_target(lp[lhp[j]]);
-      cp[j] = static_cast<std::int32_t>(4 * (lhp[j + 1] - lhp[j]) + 8);
-    });
+    lk.resize(par::unique(ctx_, lp, static_cast<std::size_t>(3 * ni)));
     if (std::getenv("GDEL_SPLAY_DEBUG"))
-      std::fprintf(stderr, "gdel3d: %lld failed stars, largest link %d vertices, %lld tets around them\n",
-                   (long long)k, par::reduce_max(ctx_, cp, static_cast<std::size_t>(k), std::int32_t(0)) / 4 - 2,
-                   (long long)ni);
-    const I64 s0 = sp_.add_stars(gv, caps);
+      std::fprintf(stderr, "gdel3d: %lld failed stars, %lld tets around them\n", (long long)k, (long long)ni);
+    // stars s0 + j, j in [0, k): group j of lk and of inc are the same vertex (both sorted)
+    const I64 s0 = sp_.build_stars(lk, gone);
     res_.stars_built = k;
-    // the neighbour sets are tried pairs
-    sp_.add_history(lk);
-    // insertion order: ∞, then nearest first (the order changes only the work, never
-    // the result: the convex star over a point set is unique). T's star of a failed vertex
-    // can be huge on degenerate input (a fan of flat tets on a coplanar hull face);
-    // inserting the near neighbours first makes the far ones drown against a small star
-    // instead of growing it: O(k * true degree) instead of O(k^2).
-    Buffer<U64, B> okey(ctx_, static_cast<std::size_t>(nl));
-    Buffer<vid_t, B> ordv(ctx_, static_cast<std::size_t>(nl));
-    {
-      U64* okp = okey.data();
-      vid_t* ovp = ordv.data();
-      const flip::Geo gg = g_;
-      const vid_t inf = g_.inf;
-      par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 i) {
-        const vid_t v = key_target(lp[i]), x = key_vertex(lp[i]);
-        std::uint32_t bits = 0;  // ∞ first: then no star holds upper facets (∞ is beyond
-                                 // them), every tet is positive in 3-D, and insertion can
-                                 // walk instead of scanning (star_insert)
-        if (x != inf) {
-          double d2 = 0;
-          for (int c = 0; c < 3; ++c) {
-            const double t = gg.p(x)[c] - gg.p(v)[c];
-            d2 += t * t;
-          }
-          const float f = static_cast<float>(d2);
-          std::memcpy(&bits, &f, sizeof bits);
-        }
-        okp[i] = (U64(static_cast<std::uint32_t>(v)) << 32) | bits;
-        ovp[i] = x;
-      });
-      par::sort_pairs(ctx_, okp, ovp, static_cast<std::size_t>(nl));  // stable: ties by id
-    }
-    const vid_t* ov = ordv.data();
-    // room for gone pairs
-    Buffer<I64, B> room(ctx_, static_cast<std::size_t>(k + 1));
-    I64* rmp = room.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) { rmp[j] = 2 * (lhp[j + 1] - lhp[j]) + 4; });
-    const I64 total = par::counts_to_offsets(ctx_, rmp, static_cast<std::size_t>(k));
-    Buffer<U64, B> g1(ctx_, static_cast<std::size_t>(std::max<I64>(total, 1)));
-    U64* gp = g1.data();
-    Buffer<I64, B> used(ctx_, static_cast<std::size_t>(k));
-    I64* up = used.data();
+    // rebuilt triangles that are tets of T need no check
     const StarView sv = sp_.view();
-    const flip::Geo g = g_;
-    std::int32_t* ep = sp_.error_ptr();
-    par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
+    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
       const I64 s = s0 + j;
-      const vid_t me = gvp[j];
-      const I64 a = lhp[j], b = lhp[j + 1];
+      const vid_t me = sv.vert[s];
       Tri* T = sv.tri + sv.begin[s];
       std::uint8_t* S = sv.state + sv.begin[s];
-      I64 gk = rmp[j];
-      const I64 gend = rmp[j + 1];
-      if (b - a < 4) {
-        ep[0] = 7;
-        up[j] = 0;
-        return;
-      }
-      vid_t first[4];
-      for (int q = 0; q < 4; ++q) first[q] = ov[a + q];
-      star_simplex(g, T, S, me, first, kTriNew, work);
-      std::int32_t count = 4;
-      for (I64 i = a + 4; i < b; ++i)
-        insert_recording(g, T, S, count, sv.cap[s], me, ov[i], work, gp, gk, gend, ep);
-      sv.count[s] = count;
-      up[j] = gk - rmp[j];
-      // triangles that are tets of T need no check
       const I64 ta = ihp[j], tb = ihp[j + 1];
-      for (std::int32_t i = 0; i < count; ++i) {
+      for (std::int32_t i = 0; i < sv.count[s]; ++i) {
         bool in_t = false;
         for (I64 q = ta; q < tb && !in_t; ++q) {
           Tri lt;
@@ -335,8 +246,6 @@ class GDel3D {
         set_kind(S[i], in_t ? kTriChecked : kTriNew);
       }
     });
-    sp_.throw_if_error("building a failed vertex's star");
-    gone = sp_.pack_pairs(gp, rmp, up, k);
   }
 
   // Steps 1-3.
@@ -403,73 +312,22 @@ class GDel3D {
           return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
         },
         geom::kPredicateWork);
-    // flp[t] > 0: kept. Star tets: per star, per triangle.
-    const I64 nst = sp_.num_stars();
-    const StarView sv = sp_.view();
-    const I64 slots = sp_.slot_count();
-    Buffer<std::int8_t, B> sflat(ctx_, static_cast<std::size_t>(std::max<I64>(slots, 1)));
-    std::int8_t* sfp = sflat.data();
-    Buffer<I64, B> slot_star(ctx_, static_cast<std::size_t>(std::max<I64>(slots, 1)));
-    I64* ssp = slot_star.data();
-    par::fill(ctx_, ssp, slot_star.size(), I64(-1));
-    par::parallel_for(ctx_, nst, [=] GDEL_HD(I64 s) {
-      for (std::int32_t i = 0; i < sv.count[s]; ++i) ssp[sv.begin[s] + i] = s;
-    });
-    auto s_candidate = [=] GDEL_HD(I64 q, vid_t* tet) -> bool {
-      const I64 s = ssp[q];
-      if (s < 0) return false;
-      const Tri& tr = sv.tri[q];
-      tet[0] = sv.vert[s];
-      tet[1] = tr.v[0];
-      tet[2] = tr.v[1];
-      tet[3] = tr.v[2];
-      for (int i = 1; i < 4; ++i) {
-        if (tet[i] == inf) return false;
-        if (so[tet[i]] >= 0 && tet[i] < tet[0]) return false;  // owned by a smaller star
-      }
-      return true;
-    };
-    res_.exact_evaluations += par::two_stage_signs(
-        ctx_, slots, sfp,
-        [=] GDEL_HD(I64 q) -> std::int8_t {
-          vid_t v[4] = {0, 0, 0, 0};
-          if (!s_candidate(q, v)) return 0;
-          const int s = geom::orient3d_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]));
-          return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
-        },
-        [=] GDEL_HD(I64 q, double* work) -> std::int8_t {
-          vid_t v[4] = {0, 0, 0, 0};
-          if (!s_candidate(q, v)) return 0;
-          return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
-        },
-        geom::kPredicateWork);
-    // negative star tets would mean an upper facet survived: inconsistent
-    std::int32_t* ep = sp_.error_ptr();
-    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
-      if (sfp[q] < 0) ep[0] = 8;
-    });
-    sp_.throw_if_error("extracting tets");
+    // flp[t] > 0: kept. Star tets: from the stars, each once.
+    Buffer<I64, B> snum(ctx_);
+    I64 flat_stars = 0;
+    const I64 nstar = sp_.plan_star_tets(snum, flat_stars, res_.exact_evaluations);
     // numbering: T tets first, then star tets
     Buffer<I64, B> tnum(ctx_, static_cast<std::size_t>(nt + 1));
     I64* tnp = tnum.data();
     par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) { tnp[t] = flp[t] > 0 ? 1 : 0; });
     const I64 nkeep = par::counts_to_offsets(ctx_, tnp, static_cast<std::size_t>(nt));
-    Buffer<I64, B> snum(ctx_, static_cast<std::size_t>(slots + 1));
-    I64* snp = snum.data();
-    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) { snp[q] = sfp[q] > 0 ? 1 : 0; });
-    const I64 nstar = par::counts_to_offsets(ctx_, snp, static_cast<std::size_t>(slots));
     const I64 nout = nkeep + nstar;
     // flat tets dropped (T tets without star vertices, and star tets)
     {
-      Buffer<I64, B> z(ctx_, static_cast<std::size_t>(std::max<I64>(nt, slots) + 1));
+      Buffer<I64, B> z(ctx_, static_cast<std::size_t>(nt + 1));
       I64* zp = z.data();
       par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) { zp[t] = (t_candidate(t) && flp[t] == 0) ? 1 : 0; });
-      res_.flat_removed = par::reduce_sum(ctx_, zp, static_cast<std::size_t>(nt));
-      par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
-        vid_t v[4];
-        zp[q] = (s_candidate(q, v) && sfp[q] == 0) ? 1 : 0;
-      });
-      res_.flat_removed += par::reduce_sum(ctx_, zp, static_cast<std::size_t>(slots));
+      res_.flat_removed = par::reduce_sum(ctx_, zp, static_cast<std::size_t>(nt)) + flat_stars;
     }
     tets.resize(static_cast<std::size_t>(4 * nout));
     nbr.resize(static_cast<std::size_t>(4 * nout));
@@ -487,75 +345,8 @@ class GDel3D {
         np[4 * d + i] = u_inf ? -1 : (tnp[u + 1] != tnp[u] ? static_cast<std::int32_t>(tnp[u]) : -2);
       }
     });
-    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
-      if (snp[q + 1] == snp[q]) return;
-      const I64 d = nkeep + snp[q];
-      const I64 s = ssp[q];
-      op[4 * d + 0] = sv.vert[s];
-      for (int i = 0; i < 3; ++i) op[4 * d + 1 + i] = sv.tri[q].v[i];
-      for (int i = 0; i < 4; ++i) np[4 * d + i] = -2;
-    });
-    match_faces(tets, nbr, nout);
-  }
-
-  // Resolves neighbours marked -2 by sorting their faces' vertex keys; a face without
-  // a partner is a hull face (-1).
-  void match_faces(Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr, I64 nout) {
-    std::int32_t* np = nbr.data();
-    const vid_t* tp = tets.data();
-    Buffer<I64, B> open(ctx_, static_cast<std::size_t>(std::max<I64>(4 * nout, 1)));
-    const std::size_t k = par::select_indices(ctx_, static_cast<std::size_t>(4 * nout), open.data(),
-                                              [=] GDEL_HD(I64 f) { return np[f] == -2; });
-    if (k == 0) return;
-    const I64* fp = open.data();
-    auto face = [=] GDEL_HD(I64 f, vid_t* w) {
-      const I64 t = f >> 2;
-      const int i = static_cast<int>(f & 3);
-      vid_t a = tp[4 * t + face_vertex(i, 0)], b = tp[4 * t + face_vertex(i, 1)], c = tp[4 * t + face_vertex(i, 2)];
-      if (a > b) { vid_t x = a; a = b; b = x; }
-      if (b > c) { vid_t x = b; b = c; c = x; }
-      if (a > b) { vid_t x = a; a = b; b = x; }
-      w[0] = a; w[1] = b; w[2] = c;
-    };
-    // two stable passes: by c, then by (a, b)
-    Buffer<U64, B> key(ctx_, k);
-    Buffer<I64, B> val(ctx_, k);
-    U64* kp = key.data();
-    I64* vp = val.data();
-    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
-      vid_t w[3];
-      face(fp[j], w);
-      kp[j] = static_cast<std::uint32_t>(w[2]);
-      vp[j] = fp[j];
-    });
-    par::sort_pairs(ctx_, kp, vp, k);
-    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
-      vid_t w[3];
-      face(vp[j], w);
-      kp[j] = pair_key(w[0], w[1]);
-    });
-    par::sort_pairs(ctx_, kp, vp, k);
-    const I64 kk = static_cast<I64>(k);
-    par::parallel_for(ctx_, kk, [=] GDEL_HD(I64 j) {
-      vid_t w[3], x[3];
-      face(vp[j], w);
-      bool paired = false;
-      if (j + 1 < kk) {
-        face(vp[j + 1], x);
-        if (x[0] == w[0] && x[1] == w[1] && x[2] == w[2]) {
-          np[vp[j]] = static_cast<std::int32_t>(vp[j + 1] >> 2);
-          paired = true;
-        }
-      }
-      if (j > 0) {
-        face(vp[j - 1], x);
-        if (x[0] == w[0] && x[1] == w[1] && x[2] == w[2]) {
-          np[vp[j]] = static_cast<std::int32_t>(vp[j - 1] >> 2);
-          paired = true;
-        }
-      }
-      if (!paired) np[vp[j]] = -1;
-    });
+    sp_.write_star_tets(snum, op, np, nkeep);
+    sp_.match_faces(tets, nbr, nout);
   }
 
  private:

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <cstdint>
 #include <stdexcept>
@@ -184,6 +185,112 @@ class Splayer {
     slots_ = total;
   }
 
+  // Group starts of sorted pair keys by target: heads[j] for j in [0, k], k groups.
+  Buffer<I64, B> group_heads(const Buffer<U64, B>& keys, I64& k) {
+    const I64 n = static_cast<I64>(keys.size());
+    const U64* kp = keys.data();
+    Buffer<I64, B> heads(ctx_, static_cast<std::size_t>(n + 1));
+    k = static_cast<I64>(par::select_indices(ctx_, static_cast<std::size_t>(n), heads.data(), [=] GDEL_HD(I64 i) {
+      return i == 0 || key_target(kp[i - 1]) != key_target(kp[i]);
+    }));
+    I64* hp = heads.data();
+    const I64 kk = k;
+    par::parallel_for(ctx_, 1, [=] GDEL_HD(I64) { hp[kk] = n; });
+    return heads;
+  }
+
+  // Creates one star per target of `lk` (sorted unique pair keys (v << 32 | x); v must
+  // not have a star yet, and needs at least 4 such x) by beneath-beyond insertion of its
+  // x's: ∞ first, then nearest first. The order changes only the work, never the result
+  // (the convex star over a point set is unique): with ∞ first no star holds upper
+  // facets, every tet is positive in 3-D and insertion walks instead of scanning
+  // (star_insert); nearest first makes far points drown against a small star instead of
+  // growing it (O(k * true degree), not O(k^2), for the huge link of a point on a
+  // coplanar hull face). Every triangle is New; the pairs become history; drowned and
+  // submerged pairs go to `gone`. Returns the id of the first new star (stars follow in
+  // the order of the groups).
+  I64 build_stars(const Buffer<U64, B>& lk, Buffer<U64, B>& gone) {
+    I64 k = 0;
+    Buffer<I64, B> lh = group_heads(lk, k);
+    const I64* lhp = lh.data();
+    const I64 nl = static_cast<I64>(lk.size());
+    const U64* lp = lk.data();
+    Buffer<vid_t, B> gv(ctx_, static_cast<std::size_t>(k));
+    Buffer<std::int32_t, B> caps(ctx_, static_cast<std::size_t>(k));
+    vid_t* gvp = gv.data();
+    std::int32_t* cp = caps.data();
+    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
+      gvp[j] = key_target(lp[lhp[j]]);
+      cp[j] = static_cast<std::int32_t>(4 * (lhp[j + 1] - lhp[j]) + 8);
+    });
+    if (debug_)
+      std::fprintf(stderr, "splay: building %lld stars, largest working set %d\n", (long long)k,
+                   k ? par::reduce_max(ctx_, cp, static_cast<std::size_t>(k), std::int32_t(0)) / 4 - 2 : 0);
+    const I64 s0 = add_stars(gv, caps);
+    add_history(lk);
+    Buffer<U64, B> okey(ctx_, static_cast<std::size_t>(nl));
+    Buffer<vid_t, B> ordv(ctx_, static_cast<std::size_t>(nl));
+    {
+      U64* okp = okey.data();
+      vid_t* ovp = ordv.data();
+      const flip::Geo gg = g_;
+      const vid_t inf = g_.inf;
+      par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 i) {
+        const vid_t v = key_target(lp[i]), x = key_vertex(lp[i]);
+        std::uint32_t bits = 0;  // ∞: distance 0, first
+        if (x != inf) {
+          double d2 = 0;
+          for (int c = 0; c < 3; ++c) {
+            const double t = gg.p(x)[c] - gg.p(v)[c];
+            d2 += t * t;
+          }
+          const float f = static_cast<float>(d2);  // order only: rounding is harmless
+          std::memcpy(&bits, &f, sizeof bits);
+        }
+        okp[i] = (U64(static_cast<std::uint32_t>(v)) << 32) | bits;
+        ovp[i] = x;
+      });
+      par::sort_pairs(ctx_, okp, ovp, static_cast<std::size_t>(nl));  // stable: ties by id
+    }
+    const vid_t* ov = ordv.data();
+    Buffer<I64, B> room(ctx_, static_cast<std::size_t>(k + 1));
+    I64* rmp = room.data();
+    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) { rmp[j] = 2 * (lhp[j + 1] - lhp[j]) + 4; });
+    const I64 total = par::counts_to_offsets(ctx_, rmp, static_cast<std::size_t>(k));
+    Buffer<U64, B> g1(ctx_, static_cast<std::size_t>(std::max<I64>(total, 1)));
+    U64* gp = g1.data();
+    Buffer<I64, B> used(ctx_, static_cast<std::size_t>(k));
+    I64* up = used.data();
+    const StarView sv = view();
+    const flip::Geo g = g_;
+    std::int32_t* ep = error_.data();
+    par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
+      const I64 s = s0 + j;
+      const vid_t me = gvp[j];
+      const I64 a = lhp[j], b = lhp[j + 1];
+      Tri* T = sv.tri + sv.begin[s];
+      std::uint8_t* S = sv.state + sv.begin[s];
+      I64 gk = rmp[j];
+      const I64 gend = rmp[j + 1];
+      up[j] = 0;
+      if (b - a < 4) {
+        ep[0] = 7;
+        return;
+      }
+      vid_t first[4];
+      for (int q = 0; q < 4; ++q) first[q] = ov[a + q];
+      star_simplex(g, T, S, me, first, kTriNew, work);
+      std::int32_t count = 4;
+      for (I64 i = a + 4; i < b; ++i)
+        insert_recording(g, T, S, count, sv.cap[s], me, ov[i], work, gp, gk, gend, ep);
+      sv.count[s] = count;
+      up[j] = gk - rmp[j];
+    });
+    throw_if_error("building stars");
+    gone = pack_pairs(gp, rmp, up, k);
+    return s0;
+  }
+
   // Runs splaying rounds from the given requests (keys pair_key(target, vertex), any
   // order, duplicates allowed) until no new request appears.
   // The source of stars that do not exist yet: must create the stars of the vertices in
@@ -217,6 +324,147 @@ class Splayer {
       checks(next);
       req = std::move(next);
     }
+  }
+
+  // Output tets from the stars: the tet (s, a, b, c) of every link triangle abc of the
+  // star of s, emitted once, by the star of its smallest vertex that has a star, unless
+  // it holds ∞ or is flat (exact orient3d = 0: only on coplanar hull faces). A negative
+  // tet is an upper-hull facet: dropped when `upper_allowed` (stars of the whole 4-D hull,
+  // gStar4D), else an upper facet that survived next to ∞: an inconsistency, reported.
+  // num (slots + 1) gets the exclusive prefix count of emitted tets per slot; returns
+  // their number, adds the flat tets dropped to `flat` and the exact evaluations to `exact`.
+  I64 plan_star_tets(Buffer<I64, B>& num, I64& flat, I64& exact, bool upper_allowed = false) {
+    const I64 slots = slots_;
+    const StarView sv = view();
+    const std::int32_t* so = star_of_.data();
+    const vid_t inf = g_.inf;
+    const flip::Geo g = g_;
+    Buffer<I64, B> slot_star(ctx_, static_cast<std::size_t>(std::max<I64>(slots, 1)));
+    I64* ssp = slot_star.data();
+    par::fill(ctx_, ssp, slot_star.size(), I64(-1));
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+      for (std::int32_t i = 0; i < sv.count[s]; ++i) ssp[sv.begin[s] + i] = s;
+    });
+    auto candidate = [=] GDEL_HD(I64 q, vid_t* tet) -> bool {
+      const I64 s = ssp[q];
+      if (s < 0) return false;
+      const Tri& tr = sv.tri[q];
+      tet[0] = sv.vert[s];
+      for (int i = 0; i < 3; ++i) tet[1 + i] = tr.v[i];
+      for (int i = 1; i < 4; ++i) {
+        if (tet[i] == inf) return false;
+        if (so[tet[i]] >= 0 && tet[i] < tet[0]) return false;  // owned by a smaller star
+      }
+      return true;
+    };
+    Buffer<std::int8_t, B> sgn(ctx_, static_cast<std::size_t>(std::max<I64>(slots, 1)));
+    std::int8_t* sfp = sgn.data();
+    exact += par::two_stage_signs(
+        ctx_, slots, sfp,
+        [=] GDEL_HD(I64 q) -> std::int8_t {
+          vid_t v[4] = {0, 0, 0, 0};
+          if (!candidate(q, v)) return 0;
+          const int r = geom::orient3d_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]));
+          return r == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(r);
+        },
+        [=] GDEL_HD(I64 q, double* work) -> std::int8_t {
+          vid_t v[4] = {0, 0, 0, 0};
+          if (!candidate(q, v)) return 0;
+          return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
+        },
+        geom::kPredicateWork);
+    std::int32_t* ep = error_.data();
+    if (!upper_allowed)
+      par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
+        if (sfp[q] < 0) ep[0] = 8;
+      });
+    throw_if_error("extracting tets");
+    num.resize(static_cast<std::size_t>(slots + 1));
+    I64* np = num.data();
+    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
+      vid_t v[4];
+      np[q] = (candidate(q, v) && sfp[q] == 0) ? 1 : 0;
+    });
+    flat += par::reduce_sum(ctx_, np, static_cast<std::size_t>(slots));  // (upper facets are not counted)
+    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) { np[q] = sfp[q] > 0 ? 1 : 0; });
+    return par::counts_to_offsets(ctx_, np, static_cast<std::size_t>(slots));
+  }
+
+  // Writes the tets planned by plan_star_tets at tets[4 * (base + num[q])], their
+  // neighbours as -2 (to be matched by match_faces).
+  void write_star_tets(const Buffer<I64, B>& num, vid_t* tets, std::int32_t* nbr, I64 base) {
+    const I64* np = num.data();
+    const StarView sv = view();
+    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+      for (std::int32_t i = 0; i < sv.count[s]; ++i) {
+        const I64 q = sv.begin[s] + i;
+        if (np[q + 1] == np[q]) continue;
+        const I64 d = base + np[q];
+        tets[4 * d + 0] = sv.vert[s];
+        for (int k = 0; k < 3; ++k) tets[4 * d + 1 + k] = sv.tri[q].v[k];
+        for (int k = 0; k < 4; ++k) nbr[4 * d + k] = -2;
+      }
+    });
+  }
+
+  // Resolves neighbours marked -2 by sorting their faces' vertex keys; a face without
+  // a partner is a hull face (-1).
+  void match_faces(Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr, I64 nout) {
+    std::int32_t* np = nbr.data();
+    const vid_t* tp = tets.data();
+    Buffer<I64, B> open(ctx_, static_cast<std::size_t>(std::max<I64>(4 * nout, 1)));
+    const std::size_t k = par::select_indices(ctx_, static_cast<std::size_t>(4 * nout), open.data(),
+                                              [=] GDEL_HD(I64 f) { return np[f] == -2; });
+    if (k == 0) return;
+    const I64* fp = open.data();
+    auto face = [=] GDEL_HD(I64 f, vid_t* w) {
+      const I64 t = f >> 2;
+      const int i = static_cast<int>(f & 3);
+      vid_t a = tp[4 * t + face_vertex(i, 0)], b = tp[4 * t + face_vertex(i, 1)], c = tp[4 * t + face_vertex(i, 2)];
+      if (a > b) { vid_t x = a; a = b; b = x; }
+      if (b > c) { vid_t x = b; b = c; c = x; }
+      if (a > b) { vid_t x = a; a = b; b = x; }
+      w[0] = a; w[1] = b; w[2] = c;
+    };
+    // two stable passes: by c, then by (a, b)
+    Buffer<U64, B> key(ctx_, k);
+    Buffer<I64, B> val(ctx_, k);
+    U64* kp = key.data();
+    I64* vp = val.data();
+    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
+      vid_t w[3];
+      face(fp[j], w);
+      kp[j] = static_cast<std::uint32_t>(w[2]);
+      vp[j] = fp[j];
+    });
+    par::sort_pairs(ctx_, kp, vp, k);
+    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
+      vid_t w[3];
+      face(vp[j], w);
+      kp[j] = pair_key(w[0], w[1]);
+    });
+    par::sort_pairs(ctx_, kp, vp, k);
+    const I64 kk = static_cast<I64>(k);
+    par::parallel_for(ctx_, kk, [=] GDEL_HD(I64 j) {
+      vid_t w[3], x[3];
+      face(vp[j], w);
+      bool paired = false;
+      if (j + 1 < kk) {
+        face(vp[j + 1], x);
+        if (x[0] == w[0] && x[1] == w[1] && x[2] == w[2]) {
+          np[vp[j]] = static_cast<std::int32_t>(vp[j + 1] >> 2);
+          paired = true;
+        }
+      }
+      if (j > 0) {
+        face(vp[j - 1], x);
+        if (x[0] == w[0] && x[1] == w[1] && x[2] == w[2]) {
+          np[vp[j]] = static_cast<std::int32_t>(vp[j - 1] >> 2);
+          paired = true;
+        }
+      }
+      if (!paired) np[vp[j]] = -1;
+    });
   }
 
   // Fails loudly if a kernel saw a broken (non-convex) star.
