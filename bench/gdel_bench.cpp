@@ -5,7 +5,7 @@
 //   gdel-bench [--dist uniform,gaussian,...] [--n 100000,1000000] [--methods LIST]
 //              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify]
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
-//   methods: gdel3d-cuda, gdel3d-cpu, gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
+//   methods: gdel3d-cuda, gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            cgal, cgal-par   (default: all available)
 #include <algorithm>
 #include <cstdio>
@@ -111,10 +111,11 @@ int main(int argc, char** argv) {
         r.method = m;
         r.n = n;
         std::vector<double> times;
-        if (m.rfind("gflip3d", 0) == 0 || m.rfind("gdel3d", 0) == 0) {
-          const bool exact = m.rfind("gdel3d", 0) == 0;
+        if (m.rfind("gflip3d", 0) == 0 || m.rfind("gdel3d", 0) == 0 || m.rfind("gstar4d", 0) == 0) {
+          const bool star = m.rfind("gstar4d", 0) == 0;
+          const bool exact = star || m.rfind("gdel3d", 0) == 0;
           gdel::Options o;
-          o.algorithm = exact ? gdel::Algorithm::gdel3d : gdel::Algorithm::gflip3d;
+          o.algorithm = star ? gdel::Algorithm::gstar4d : exact ? gdel::Algorithm::gdel3d : gdel::Algorithm::gflip3d;
           o.terminal_flipping = m.find("terminal") != std::string::npos;
           o.reorder_tets = std::getenv("GDEL_TET_REORDER") != nullptr;
           o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
@@ -127,7 +128,7 @@ int main(int argc, char** argv) {
           }
           r.tets = t.num_tets();
           r.flips = t.stats.flips23 + t.stats.flips32;
-          r.failed = exact ? t.stats.repair_failed_vertices : t.stats.failed_vertices;
+          r.failed = star ? t.stats.certificate_fallbacks : exact ? t.stats.repair_failed_vertices : t.stats.failed_vertices;
           r.rounds = t.stats.rounds;
           r.iterations = t.stats.flip_iterations;
           r.peak = t.stats.peak_bytes;

@@ -15,6 +15,9 @@ enum class Algorithm {
   Auto,     // the best available exact algorithm (today: gdel3d)
   gflip3d,  // parallel insertion + flipping: a near-Delaunay triangulation (failed vertices reported)
   gdel3d,   // gflip3d + parallel star-splaying repair: the exact Delaunay triangulation
+  gstar4d,  // digital Voronoi diagram -> working sets -> 4-D stars -> parallel star splaying:
+            // the exact Delaunay triangulation, certified by the exact verifier (on a
+            // failed certificate the result is recomputed by gdel3d; Stats says so)
 };
 const char* to_string(Algorithm a);
 
@@ -41,6 +44,11 @@ struct Options {
   bool canonical_order = false;
   // Run the exact verifier on the result and store its report summary in stats.
   bool verify = false;
+  // gstar4d: side W of the W^3 digital Voronoi grid (0 = automatic: about 8 voxels per
+  // point within a quarter of the free memory; docs/gstar4d.md), and the least number
+  // of candidates in a working set (pumping, default 8).
+  int grid = 0;
+  int min_candidates = 8;
 };
 
 struct Stats {
@@ -60,6 +68,9 @@ struct Stats {
   // tets (exact zero volume, on coplanar hull faces) dropped from the output
   std::int64_t repair_failed_vertices = 0, stars_built = 0, stars_pulled = 0, splay_rounds = 0,
                splay_insertions = 0, flat_tets_removed = 0;
+  // gstar4d: grid side, candidate pairs in the working sets, and whether the exact
+  // certificate of its result failed so that gdel3d recomputed it (0 or 1)
+  std::int64_t grid = 0, working_set_pairs = 0, certificate_fallbacks = 0;
   std::int64_t peak_bytes = 0;         // peak backend memory (device memory for CUDA)
   std::string verify_summary;          // with Options::verify
   std::string to_string() const;

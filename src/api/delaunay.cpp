@@ -17,6 +17,7 @@ const char* to_string(Algorithm a) {
     case Algorithm::Auto: return "auto";
     case Algorithm::gflip3d: return "gflip3d";
     case Algorithm::gdel3d: return "gdel3d";
+    case Algorithm::gstar4d: return "gstar4d";
   }
   return "?";
 }
@@ -29,6 +30,10 @@ std::string Stats::to_string() const {
   s << "  rounds " << rounds << ", flip iterations " << flip_iterations << ", flips 2-3 " << flips23 << ", 3-2 "
     << flips32 << ", exact evaluations " << exact_evaluations << ", failed vertices " << failed_vertices
     << ", peak memory " << peak_bytes / (1024.0 * 1024.0) << " MiB";
+  if (algorithm == "gstar4d")
+    s << "\n  gstar4d: grid " << grid << "^3, working-set pairs " << working_set_pairs << ", stars " << stars_built
+      << ", splay rounds " << splay_rounds << ", insertions " << splay_insertions << ", certificate fallbacks "
+      << certificate_fallbacks;
   if (algorithm == "gdel3d")
     s << "\n  repair: failed vertices " << repair_failed_vertices << ", stars built " << stars_built
       << ", stars pulled " << stars_pulled << ", splay rounds " << splay_rounds << ", insertions "
@@ -51,7 +56,13 @@ void canonicalize(Triangulation& t) {
   }
   std::vector<std::size_t> order(m);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  // by vertex ids only: the position bits (low 2) say where a vertex came from, which
+  // differs between algorithms and must not order the list
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    for (int k = 0; k < 4; ++k)
+      if ((key[a][k] >> 2) != (key[b][k] >> 2)) return (key[a][k] >> 2) < (key[b][k] >> 2);
+    return false;
+  });
   std::vector<std::int32_t> newid(m);
   for (std::size_t r = 0; r < m; ++r) newid[order[r]] = static_cast<std::int32_t>(r);
   std::vector<std::int32_t> tets(4 * m), nb(4 * m);
@@ -86,6 +97,27 @@ Triangulation delaunay(std::span<const double> points, const Options& options) {
   } else {
     par::Context<par::Cpu> ctx;
     t = api::delaunay_on(ctx, work, options);
+  }
+  if (options.algorithm == Algorithm::gstar4d) {
+    // Certificate: valid triangulation of the hull, every facet locally Delaunay, no flat
+    // tet (exact). On failure the answer comes from gdel3d (star4d/star_stage.hpp says why).
+    auto r = verify(work, t.tets, {}, options.backend);
+    if (!r.delaunay() || r.degenerate_tets != 0) {
+      Options o = options;
+      o.algorithm = Algorithm::gdel3d;
+      o.canonical_order = false;
+      o.verify = false;
+      Stats first = t.stats;
+      t = delaunay(work, o);
+      first.certificate_fallbacks = 1;
+      first.stages.push_back({"gstar4d certificate failed: gdel3d", t.stats.seconds});
+      first.seconds += t.stats.seconds;
+      first.verify_summary.clear();
+      t.stats = first;
+    } else {
+      t.stats.stages.push_back({"gstar4d certificate (exact verifier)", r.seconds});
+      t.stats.seconds += r.seconds;
+    }
   }
   if (options.canonical_order) canonicalize(t);
   if (options.verify) {

@@ -9,6 +9,7 @@
 
 #include "flip/gflip3d.hpp"
 #include "splay/gdel3d.hpp"
+#include "star4d/gstar4d.hpp"
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "sort/point_sort.hpp"
@@ -27,7 +28,7 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
   Stats& st = out.stats;
   st.backend = B::name;
   const bool exact = opt.algorithm != Algorithm::gflip3d;
-  st.algorithm = exact ? "gdel3d" : "gflip3d";
+  st.algorithm = opt.algorithm == Algorithm::gstar4d ? "gstar4d" : exact ? "gdel3d" : "gflip3d";
   const I64 n = static_cast<I64>(points.size() / 3);
   st.points = n;
 
@@ -81,6 +82,24 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
     par::parallel_for(ctx, 1, [=] GDEL_HD(I64) { sp[m] = n; });  // K perturbs least... any fixed index works
   }
   st.stages.push_back({"prepare (duplicates, Hilbert sort)", since(t0)});
+
+  // --- gStar4D ----------------------------------------------------------------------------
+  if (opt.algorithm == Algorithm::gstar4d) {
+    Buffer<vid_t, B> tv(ctx);
+    Buffer<std::int32_t, B> tn(ctx);
+    star4d::gstar4d(ctx, P, sid, m, lo, hi, opt, st, tv, tn);
+    t0 = std::chrono::steady_clock::now();
+    vid_t* tvp = tv.data();
+    const I64* sp = sid.data();
+    par::parallel_for(ctx, static_cast<I64>(tv.size()),
+                      [=] GDEL_HD(I64 i) { tvp[i] = static_cast<vid_t>(sp[tvp[i]]); });
+    out.tets = tv.to_host();
+    out.neighbors = tn.to_host();
+    st.stages.push_back({"output", since(t0)});
+    st.peak_bytes = static_cast<I64>(ctx.memory().peak());
+    st.seconds = since(t_start);
+    return out;
+  }
 
   // --- algorithm -------------------------------------------------------------------------
   flip::FlipConfig cfg;

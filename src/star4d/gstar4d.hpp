@@ -1,0 +1,70 @@
+// gStar4D (ALGORITHMS.md §5), all five stages, written once over the backend tag B:
+//
+//   1. digital Voronoi diagram of the points on a W³ grid (pba.hpp, Parallel Banding);
+//   2. working sets: candidate neighbours from the grid (working_sets.hpp);
+//   3-5. stars, splaying, lower-hull tets with adjacency (star_stage.hpp).
+//
+// Input: the m distinct points in internal (Hilbert) order with their SoS indices, slot
+// m reserved for ∞'s kernel point (set here: the same seed as gFlip3D, which also
+// raises DegenerateInput for coplanar input). Output: tets in internal ids, positive,
+// neighbours (-1 on the hull). The API certifies the result with the exact verifier
+// (api/delaunay_impl.hpp): star splaying's local rules cannot see a globally wrong but
+// locally consistent set of stars (star_stage.hpp).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+
+#include "flip/gflip3d.hpp"
+#include "gdel/delaunay.hpp"
+#include "star4d/pba.hpp"
+#include "star4d/star_stage.hpp"
+#include "star4d/working_sets.hpp"
+
+namespace gdel::star4d {
+
+template <class B>
+void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid, I64 m, const double* lo,
+             const double* hi, const Options& opt, Stats& st, Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr) {
+  auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+  auto t0 = std::chrono::steady_clock::now();
+  {
+    flip::GFlip3D<B> seed(ctx, P, sid, m, flip::FlipConfig{}, st);
+    vid_t t[4];
+    seed.first_tetrahedron(t);  // degeneracy check + kernel point (slot m)
+  }
+  WorkingSets<B> ws = [&] {
+    PbaOptions po;
+    po.grid = opt.grid;
+    DigitalVoronoi<B> dv = digital_voronoi(ctx, P.data(), m, lo, hi, po);  // freed on return
+    st.grid = dv.W;
+    ctx.synchronize();
+    st.stages.push_back({"gstar4d digital Voronoi (PBA)", since(t0)});
+    t0 = std::chrono::steady_clock::now();
+    WorkingSetOptions wo;
+    wo.min_candidates = opt.min_candidates;
+    WorkingSets<B> w = working_sets(ctx, dv, wo);
+    ctx.synchronize();
+    st.stages.push_back({"gstar4d working sets", since(t0)});
+    return w;
+  }();
+  st.working_set_pairs = static_cast<I64>(ws.ids.size());
+  t0 = std::chrono::steady_clock::now();
+  const flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m)};
+  StarStage<B> stage(ctx, g, m);
+  stage.splay(ws.offsets.data(), ws.ids.data());
+  ctx.synchronize();
+  st.stages.push_back({"gstar4d stars + splaying", since(t0)});
+  t0 = std::chrono::steady_clock::now();
+  stage.extract(tets, nbr);
+  ctx.synchronize();
+  st.stages.push_back({"gstar4d tets", since(t0)});
+  const auto& r = stage.result();
+  st.stars_built = r.stars;
+  st.splay_rounds = r.splay.rounds;
+  st.splay_insertions = r.splay.insertions;
+  st.flat_tets_removed = r.flat_removed;
+  st.exact_evaluations += r.exact_evaluations;
+}
+
+}  // namespace gdel::star4d

@@ -1,0 +1,40 @@
+// gStar4D cases shared by the CPU and GPU test programs: on every generator the result
+// is the exact Delaunay triangulation (verifier), identical to gdel3d's (the same
+// symbolic perturbation), reached by star splaying itself (no certificate fallback),
+// and deterministic.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include "common/gdel3d_cases.hpp"
+
+namespace gdel::test {
+
+inline void gstar4d_generator_cases(Backend b, std::size_t n) {
+  using gen::Distribution;
+  for (Distribution d : {Distribution::Uniform, Distribution::Gaussian, Distribution::ThinShell, Distribution::Grid,
+                         Distribution::Sphere, Distribution::Ball, Distribution::SkewLines}) {
+    SCOPED_TRACE(std::string(gen::to_string(d)));
+    const std::size_t nn = d == Distribution::SkewLines ? std::min<std::size_t>(n / 10, 400) : n;
+    auto pts = gen::generate(d, nn, 4321);
+    Options o;
+    o.backend = b;
+    o.canonical_order = true;
+    o.algorithm = Algorithm::gstar4d;
+    Triangulation t = delaunay(pts, o);
+    SCOPED_TRACE(t.stats.to_string());
+    EXPECT_EQ(t.stats.algorithm, "gstar4d");
+    EXPECT_EQ(t.stats.certificate_fallbacks, 0);
+    t.stats.algorithm = "gdel3d";  // expect_exact_delaunay's label check
+    expect_exact_delaunay(pts, t, b);
+    o.algorithm = Algorithm::gdel3d;
+    Triangulation ref = delaunay(pts, o);
+    EXPECT_EQ(t.tets, ref.tets);
+    EXPECT_EQ(t.neighbors, ref.neighbors);
+    o.algorithm = Algorithm::gstar4d;
+    Triangulation t2 = delaunay(pts, o);
+    EXPECT_EQ(t.tets, t2.tets);
+  }
+}
+
+}  // namespace gdel::test
