@@ -1,22 +1,30 @@
-// The `gdel` command.
+// The `gdel` command (docs/cli.md is its manual).
 //
-//   gdel delaunay IN -o OUT.ele [--algorithm A] [--device D] [--check] [--stats] [--quiet]
-//   gdel delaunay --example DIST:N -o OUT.ele ...   (built-in generated input)
-//   gdel check POINTS TETS.ele [--weights W]
-//   gdel generate DIST N -o OUT.xyz [--seed S]
+//   gdel delaunay IN -o OUT [--algorithm A] [--device D] [--check] [--stats] [--quiet]
+//   gdel delaunay --example DIST:N -o OUT ...       (built-in generated input)
+//   gdel check POINTS TETS.ele [--weights W] [--device D]
+//   gdel generate DIST N -o OUT [--seed S]
+//   gdel bench [--dist D,..] [--n N,..] [--algorithm A,..] [--device D,..] [--repeat R] [--json F]
 //
-// Exit codes: 0 success; 1 usage error; 2 invalid or degenerate input / unreadable
-// file; 3 out of memory; 4 backend unavailable; 5 verification failed; 6 other error.
-// Every failure prints one line "gdel: error: ..." on stderr and writes no output
-// file (writers write a temporary file and rename it on success).
+// OUT's extension picks the format: .ele or none (TetGen .node/.ele/.neigh), .vtu, .mesh,
+// .npz. Exit codes: cli/common.hpp and docs/cli.md. Every failure prints one line
+// "gdel: error: ..." on stderr and leaves every output file as it was: the output path is
+// checked before any work, and writers write a temporary file that is renamed only once
+// complete.
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
+#include <memory>
+#include <new>
 #include <string>
+#include <vector>
 
+#include "cli/bench.hpp"
+#include "cli/common.hpp"
+#include "cli/progress.hpp"
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "gdel/verify.hpp"
@@ -26,36 +34,62 @@
 
 namespace {
 
-enum Exit { kOk = 0, kUsage = 1, kInput = 2, kMemory = 3, kBackend = 4, kVerify = 5, kOther = 6 };
+namespace fs = std::filesystem;
+using namespace gdel::cli;
+using Clock = std::chrono::steady_clock;
 
-gdel::Backend parse_backend(const std::string& s) {
-  if (s == "cpu") return gdel::Backend::Cpu;
-  if (s == "cuda") return gdel::Backend::Cuda;
-  if (s == "auto") return gdel::Backend::Auto;
-  throw gdel::InvalidInput("--device must be cpu, cuda or auto, not '" + s + "'");
-}
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-gdel::Algorithm parse_algorithm(const std::string& s) {
-  if (s == "gflip3d") return gdel::Algorithm::gflip3d;
-  if (s == "gdel3d") return gdel::Algorithm::gdel3d;
-  if (s == "auto") return gdel::Algorithm::Auto;
-  throw gdel::InvalidInput("--algorithm must be auto, gflip3d or gdel3d, not '" + s + "'");
-}
-
-// "uniform:100000" -> generated points
+// "uniform:100000" / "ball:1e6" -> generated points
 std::vector<double> example_points(const std::string& spec, std::uint64_t seed) {
-  auto colon = spec.find(':');
-  if (colon == std::string::npos) throw gdel::InvalidInput("--example expects DIST:N, e.g. uniform:100000");
-  auto dist = gdel::gen::parse_distribution(spec.substr(0, colon));
-  std::size_t n = std::stoull(spec.substr(colon + 1));
-  return gdel::gen::generate(dist, n, seed);
+  const auto colon = spec.find(':');
+  if (colon == std::string::npos) throw UsageError("--example expects DIST:N, e.g. uniform:100000");
+  gdel::gen::Distribution dist;
+  try {
+    dist = gdel::gen::parse_distribution(spec.substr(0, colon));
+  } catch (const gdel::InvalidInput& e) {
+    throw UsageError(std::string("--example: ") + e.what());
+  }
+  return gdel::gen::generate(dist, parse_count(spec.substr(colon + 1), "--example"), seed);
 }
 
-// OUT.ele / OUT -> base path without the .ele extension
-std::filesystem::path tetgen_base(const std::string& out) {
-  std::filesystem::path p(out);
-  if (p.extension() == ".ele" || p.extension() == ".node" || p.extension() == ".neigh") p.replace_extension();
-  return p;
+// Runs a writer; a file-system failure (gdel::Error that is not a bad argument) becomes an
+// OutputError (exit 8).
+template <class F>
+void writing(F&& write) {
+  try {
+    write();
+  } catch (const gdel::InvalidInput&) {
+    throw;
+  } catch (const gdel::Error& e) {
+    throw OutputError(e.what());
+  }
+}
+
+std::string join(const std::vector<fs::path>& paths) {
+  std::string s;
+  for (const auto& p : paths) s += (s.empty() ? "" : ", ") + p.string();
+  return s;
+}
+
+// One line: a message that spans lines is folded.
+std::string one_line(std::string s) {
+  for (char& c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+// Options every subcommand has.
+struct Common {
+  bool quiet = false;
+  double progress_delay = 1.0;  // hidden: tests set 0 to see the display at once
+};
+
+void add_common(CLI::App* app, Common& c) {
+  app->add_flag("-q,--quiet", c.quiet, "print nothing on success (errors still go to stderr)");
+  app->add_option("--progress-delay", c.progress_delay, "seconds before the progress line appears")->group("");
 }
 
 }  // namespace
@@ -64,130 +98,255 @@ int main(int argc, char** argv) {
   CLI::App app{"gdel: exact 3D Delaunay triangulation on GPUs and multi-core CPUs (version " +
                std::string(gdel::version()) + ")"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string(gdel::version()));
+  app.footer("Output format by extension: .ele or none (TetGen), .vtu, .mesh, .npz. Exit codes: 0 ok, 1 usage, "
+             "2 invalid input, 3 out of memory, 4 backend unavailable, 5 check failed, 6 other error, 7 degenerate "
+             "input, 8 cannot write the output. A failed run writes no file. Manual: docs/cli.md");
+  Common common;
+  const std::vector<std::string> kDevices = {"cpu", "cuda", "auto"};
+  const std::vector<std::string> kAlgorithms = {"auto", "gdel3d", "gstar4d", "gflip3d"};
 
+  // delaunay ------------------------------------------------------------------------------
   std::string in, out, algorithm = "auto", device = "auto", example;
-  bool check = false, stats = false, quiet = false, terminal = false;
+  bool check = false, stats = false, terminal = false;
   std::uint64_t seed = 1;
-  auto* del = app.add_subcommand("delaunay", "triangulate points; writes TetGen OUT.node/.ele/.neigh");
-  del->add_option("input", in, "points file (.xyz .txt .off .ply .node)");
-  del->add_option("--example", example, "use generated points instead of a file: DIST:N (uniform, gaussian, ball, "
-                                        "thin_shell, grid, sphere, skew_lines)");
-  del->add_option("-o,--output", out, "output base or OUT.ele")->required();
-  del->add_option("--algorithm", algorithm,
-                  "auto (= gdel3d: exact Delaunay) | gdel3d | gflip3d (near-Delaunay, unrepaired)")
+  auto* del = app.add_subcommand("delaunay", "triangulate points and write the mesh");
+  del->add_option("input", in, "points file: .xyz .txt .off .ply .node .npy");
+  del->add_option("--example", example,
+                  "use generated points instead of a file: DIST:N (uniform, gaussian, ball, thin_shell, grid, "
+                  "sphere, skew_lines; N like 100000 or 1e5)");
+  del->add_option("-o,--output", out,
+                  "output file; its extension picks the format: .ele or none (TetGen OUT.node/.ele/.neigh), "
+                  ".vtu (VTK), .mesh (Medit), .npz (NumPy)")
+      ->required();
+  del->add_option("--algorithm", algorithm, "auto (= gdel3d: exact Delaunay) | gdel3d | gstar4d (exact, via 4-D star splaying) | gflip3d "
+                  "(near-Delaunay, unrepaired)")
+      ->check(CLI::IsMember(kAlgorithms))
       ->capture_default_str();
-  del->add_option("--device", device, "cpu | cuda | auto")->capture_default_str();
+  del->add_option("--device", device, "cpu | cuda | auto")->check(CLI::IsMember(kDevices))->capture_default_str();
   del->add_option("--seed", seed, "seed for --example")->capture_default_str();
-  del->add_flag("--check", check, "verify the result exactly; exit 5 if it is not Delaunay");
+  del->add_flag("--check", check, "verify the result exactly before writing it; exit 5 (and write nothing) if it fails");
   del->add_flag("--terminal-flipping", terminal, "gFlip3D's insert-all-then-flip variant (for study)");
-  del->add_flag("--stats", stats, "print time per stage and counts");
-  del->add_flag("-q,--quiet", quiet, "print nothing on success");
+  del->add_flag("--stats", stats, "print time per stage, counts and memory");
+  add_common(del, common);
 
+  // check ---------------------------------------------------------------------------------
   std::string cpoints, ctets, cweights;
-  auto* chk = app.add_subcommand("check", "verify a triangulation exactly (validity, Delaunay/regular)");
-  chk->add_option("points", cpoints, "points file")->required();
+  auto* chk = app.add_subcommand("check", "verify a triangulation exactly (validity, Delaunay/regular); exit 5 if not");
+  chk->add_option("points", cpoints, "points file: .xyz .txt .off .ply .node .npy")->required();
   chk->add_option("tets", ctets, "TetGen .ele file")->required();
-  chk->add_option("--weights", cweights, "weights file (one per line) for a regular triangulation");
-  chk->add_option("--device", device, "cpu | cuda | auto")->capture_default_str();
+  chk->add_option("--weights", cweights,
+                  "weights (regular triangulation): one per line, or a .npy of shape (n,); default: the points "
+                  "file's weight column, if any");
+  chk->add_option("--device", device, "cpu | cuda | auto")->check(CLI::IsMember(kDevices))->capture_default_str();
+  add_common(chk, common);
 
-  std::string gdist;
-  std::size_t gn = 0;
+  // generate ------------------------------------------------------------------------------
+  std::string gdist, gn;
   auto* gen = app.add_subcommand("generate", "write generated points");
   gen->add_option("distribution", gdist, "uniform, gaussian, ball, thin_shell, grid, sphere, skew_lines")->required();
-  gen->add_option("n", gn, "number of points")->required();
-  gen->add_option("-o,--output", out, "output points file (.xyz, .ply, .off, .node)")->required();
+  gen->add_option("n", gn, "number of points (100000 or 1e5)")->required();
+  gen->add_option("-o,--output", out, "output points file: .xyz .txt .ply .off .node .npy")->required();
   gen->add_option("--seed", seed, "seed")->capture_default_str();
+  add_common(gen, common);
+
+  // bench ---------------------------------------------------------------------------------
+  BenchConfig bc;
+  auto* bench = app.add_subcommand("bench", "time gdel's algorithms on generated points, verify each result");
+  bench->add_option("--dist", bc.distributions, "distributions, comma-separated (uniform, gaussian, ball, thin_shell, "
+                                                "grid, sphere, skew_lines)")
+      ->delimiter(',')
+      ->capture_default_str();
+  bench->add_option("--n", bc.sizes, "point counts, comma-separated (1e5,1e6)")->delimiter(',')->capture_default_str();
+  bench->add_option("--algorithm", bc.algorithms, "algorithms, comma-separated (gdel3d, gstar4d, gflip3d, auto)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(kAlgorithms))
+      ->capture_default_str();
+  bench->add_option("--device", bc.devices, "devices, comma-separated (cpu, cuda, auto)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(kDevices))
+      ->capture_default_str();
+  bench->add_option("--repeat", bc.repeat, "runs per configuration (the median is reported)")->capture_default_str();
+  bench->add_option("--seed", bc.seed, "seed of the generated points")->capture_default_str();
+  bench->add_option("--json", bc.json, "also write the results to this JSON file");
+  bench->add_flag_callback("--no-verify", [&] { bc.verify = false; }, "skip the exact verification");
+  add_common(bench, common);
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kOk : kUsage;
+    std::fprintf(stderr, "gdel: error: %s (see gdel --help)\n", one_line(e.what()).c_str());
+    return kUsage;
   }
+
+  // The progress line: only on a terminal, never with --quiet.
+  Progress progress(::isatty(STDERR_FILENO) == 1 && !common.quiet, common.progress_delay);
+  const auto fail = [&](int code, const std::string& why) {
+    progress.stop();
+    std::fprintf(stderr, "gdel: error: %s\n", one_line(why).c_str());
+    return code;
+  };
 
   try {
     if (*del) {
-      if (in.empty() == example.empty())
-        throw gdel::InvalidInput("give exactly one of an input file or --example DIST:N");
-      std::vector<double> pts = example.empty() ? gdel::io::read_points(in).xyz : example_points(example, seed);
+      if (in.empty() == example.empty()) throw UsageError("give exactly one of an input file or --example DIST:N");
+      // Everything about the output is settled before any work.
+      try {
+        gdel::io::mesh_format(out);
+      } catch (const gdel::InvalidInput& e) {
+        throw UsageError(e.what());
+      }
+      const std::vector<fs::path> outputs = gdel::io::mesh_outputs(out, /*with_neighbours=*/true);
+      for (const auto& p : outputs) preflight_output(p);
       gdel::Options o;
       o.algorithm = parse_algorithm(algorithm);
       o.backend = parse_backend(device);
       o.terminal_flipping = terminal;
-      auto t0 = std::chrono::steady_clock::now();
-      gdel::Triangulation t = gdel::delaunay(pts, o);
-      double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      auto base = tetgen_base(out);
-      gdel::io::write_tetgen(base, pts, t.tets, t.neighbors);
-      if (!quiet)
-        std::printf("%zu points -> %lld tets in %.3f s (%s, %s); wrote %s.node/.ele/.neigh\n", pts.size() / 3,
-                    static_cast<long long>(t.num_tets()), secs, t.stats.algorithm.c_str(), t.stats.backend.c_str(),
-                    base.string().c_str());
-      if (!quiet && !t.failed_vertices.empty())
-        std::printf("note: %zu vertices lie on facets that are not locally Delaunay (%s does not repair them)\n",
-                    t.failed_vertices.size(), t.stats.algorithm.c_str());
-      if (stats) std::printf("%s\n", t.stats.to_string().c_str());
+      const gdel::Backend backend = gdel::resolve_backend(o.backend);  // BackendUnavailable: exit 4, before reading
+
+      auto t0 = Clock::now();
+      progress.phase(example.empty() ? "reading " + in : "generating " + example);
+      gdel::io::PointSet ps;
+      if (example.empty()) {
+        ps = gdel::io::read_points(in);
+      } else {
+        ps.xyz = example_points(example, seed);
+      }
+      const double read_s = since(t0);
+      const std::size_t n = ps.size();
+
+      progress.phase(std::string("triangulating ") + std::to_string(n) + " points (" + gdel::to_string(o.algorithm) +
+                     ", " + gdel::to_string(backend) + ")");
+      t0 = Clock::now();
+      gdel::Triangulation t = gdel::delaunay(ps.xyz, o);
+      const double tri_s = since(t0);
+
+      double verify_s = 0;
+      std::string check_summary;
       if (check) {
-        // The check holds the algorithm to its contract: gdel3d (and later exact
-        // algorithms) must be Delaunay; gflip3d must be a valid triangulation of the
-        // hull, in which non-locally-Delaunay facets (listed as failed vertices) and,
-        // on degenerate input, flat tets are allowed (the repair stage removes them).
-        auto r = gdel::verify(pts, t.tets, {}, o.backend);
-        bool ok = r.delaunay();
-        if (t.stats.algorithm == "gflip3d") {
-          gdel::VerifyReport v = r;
-          v.degenerate_tets = 0;
-          ok = v.valid();
+        progress.phase("verifying " + std::to_string(t.num_tets()) + " tets");
+        t0 = Clock::now();
+        const gdel::VerifyReport r = gdel::verify(ps.xyz, t.tets, {}, o.backend);
+        verify_s = since(t0);
+        check_summary = r.summary();
+        if (!meets_contract(r, t.stats.algorithm)) {
+          progress.print([&] { std::printf("check: %s\n", check_summary.c_str()); });
+          return fail(kCheck, "check failed: " + t.stats.algorithm + " result is " + failure_reason(r, t.stats.algorithm) +
+                                  "; nothing written");
         }
-        if (!quiet || !ok) std::printf("check: %s\n", r.summary().c_str());
-        if (!ok) return kVerify;
+      }
+
+      progress.phase("writing " + join(outputs));
+      t0 = Clock::now();
+      writing([&] { gdel::io::write_mesh(out, ps.xyz, t.tets, t.neighbors); });
+      const double write_s = since(t0);
+      progress.stop();
+
+      if (!common.quiet) {
+        std::printf("%zu points -> %lld tets in %.3f s (%s, %s); wrote %s\n", n, static_cast<long long>(t.num_tets()),
+                    tri_s, t.stats.algorithm.c_str(), t.stats.backend.c_str(), join(outputs).c_str());
+        if (ps.has_weights()) {
+          std::printf("note: the input's weights were ignored (gdel delaunay triangulates the points)\n");
+        }
+        if (!t.failed_vertices.empty()) {
+          std::printf("note: %zu vertices lie on facets that are not locally Delaunay (%s does not repair them)\n",
+                      t.failed_vertices.size(), t.stats.algorithm.c_str());
+        }
+        if (check) std::printf("check: %s\n", check_summary.c_str());
+      }
+      if (stats) {
+        std::printf("%s\n", t.stats.to_string().c_str());
+        std::printf("  command: read %.3f s, triangulate %.3f s, verify %.3f s, write %.3f s\n", read_s, tri_s,
+                    verify_s, write_s);
       }
       return kOk;
     }
+
     if (*chk) {
-      auto ps = gdel::io::read_points(cpoints);
-      auto tets = gdel::io::read_ele(ctets);
+      progress.phase("reading " + cpoints);
+      const gdel::io::PointSet ps = gdel::io::read_points(cpoints);
+      progress.phase("reading " + ctets);
+      const std::vector<std::int32_t> tets = gdel::io::read_ele(ctets);
       std::vector<double> w;
-      if (!cweights.empty()) {  // one weight per line
-        FILE* f = std::fopen(cweights.c_str(), "r");
-        if (!f) throw gdel::InvalidInput("cannot open weights file " + cweights);
-        double x;
-        while (std::fscanf(f, "%lf", &x) == 1) w.push_back(x);
-        std::fclose(f);
+      if (!cweights.empty()) {
+        progress.phase("reading " + cweights);
+        w = gdel::io::read_weights(cweights);
+        if (w.size() != ps.size()) {
+          throw gdel::InvalidInput(cweights + ": " + std::to_string(w.size()) + " weights for " +
+                                   std::to_string(ps.size()) + " points in " + cpoints);
+        }
       } else if (ps.has_weights()) {
         w = ps.weights;
       }
-      auto r = gdel::verify(ps.xyz, tets, w, parse_backend(device));
-      std::printf("%s\n", r.summary().c_str());
-      return r.delaunay() ? kOk : kVerify;
-    }
-    if (*gen) {
-      auto pts = gdel::gen::generate(gdel::gen::parse_distribution(gdist), gn, seed);
-      std::filesystem::path p(out);
-      auto ext = p.extension().string();
-      if (ext == ".ply") gdel::io::write_ply(p, pts);
-      else if (ext == ".off") gdel::io::write_off(p, pts);
-      else if (ext == ".node") gdel::io::write_node(p, pts);
-      else gdel::io::write_xyz(p, pts);
+      progress.phase("verifying " + std::to_string(tets.size() / 4) + " tets");
+      const gdel::VerifyReport r = gdel::verify(ps.xyz, tets, w, parse_backend(device));
+      progress.stop();
+      if (!common.quiet || !r.delaunay()) std::printf("%s\n", r.summary().c_str());
+      if (!r.delaunay()) {
+        return fail(kCheck, "check failed: " + failure_reason(r, "gdel3d", !w.empty()));
+      }
       return kOk;
     }
-  } catch (const gdel::OutOfDeviceMemory& e) {
-    std::fprintf(stderr, "gdel: error: %s\n", e.what());
-    return kMemory;
-  } catch (const gdel::BackendUnavailable& e) {
-    std::fprintf(stderr, "gdel: error: %s\n", e.what());
-    return kBackend;
+
+    if (*gen) {
+      const fs::path p(out);
+      const std::string ext = p.extension().string();
+      if (ext != ".xyz" && ext != ".txt" && ext != ".ply" && ext != ".off" && ext != ".node" && ext != ".npy") {
+        throw UsageError("cannot write '" + out + "': unknown points file extension '" + ext +
+                         "'; supported: .xyz .txt .ply .off .node .npy");
+      }
+      gdel::gen::Distribution dist;
+      try {
+        dist = gdel::gen::parse_distribution(gdist);
+      } catch (const gdel::InvalidInput& e) {
+        throw UsageError(e.what());
+      }
+      const std::size_t count = parse_count(gn, "n");
+      preflight_output(p);
+      progress.phase("generating " + gdist + " " + gn);
+      const auto pts = gdel::gen::generate(dist, count, seed);
+      progress.phase("writing " + out);
+      writing([&] {
+        if (ext == ".ply") gdel::io::write_ply(p, pts);
+        else if (ext == ".off") gdel::io::write_off(p, pts);
+        else if (ext == ".node") gdel::io::write_node(p, pts);
+        else if (ext == ".npy") gdel::io::write_npy(p, pts);
+        else gdel::io::write_xyz(p, pts);
+      });
+      progress.stop();
+      if (!common.quiet) std::printf("wrote %zu %s points to %s\n", count, gdist.c_str(), out.c_str());
+      return kOk;
+    }
+
+    if (*bench) {
+      bc.quiet = common.quiet;
+      const int code = run_bench(bc, progress);
+      progress.stop();
+      if (code == kCheck) return fail(kCheck, "bench: some results failed verification (see above)");
+      return code;
+    }
+  } catch (const UsageError& e) {
+    return fail(kUsage, std::string(e.what()) + " (see gdel --help)");
+  } catch (const OutputError& e) {
+    return fail(kOutput, e.what());
   } catch (const gdel::InvalidInput& e) {
-    std::fprintf(stderr, "gdel: error: %s\n", e.what());
-    return kInput;
+    return fail(kInput, e.what());
   } catch (const gdel::DegenerateInput& e) {
-    std::fprintf(stderr, "gdel: error: %s\n", e.what());
-    return kInput;
+    return fail(kDegenerate, std::string("degenerate input: ") + e.what());
+  } catch (const gdel::OutOfDeviceMemory& e) {
+    return fail(kMemory, e.what());
+  } catch (const gdel::BackendUnavailable& e) {
+    return fail(kBackend, e.what());
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "gdel: error: out of host memory\n");
-    return kMemory;
+    return fail(kMemory, "out of host memory");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "gdel: error: %s\n", e.what());
-    return kOther;
+    return fail(kOther, e.what());
   }
   return kOk;
 }

@@ -77,6 +77,7 @@ void AtomicFileWriter::write_through(const char* p, std::size_t n) {
     }
     p += k;
     n -= static_cast<std::size_t>(k);
+    flushed_ += static_cast<std::uint64_t>(k);
   }
 }
 
@@ -87,12 +88,18 @@ void AtomicFileWriter::flush_buffer() {
   write_through(buffer_.data(), n);
 }
 
-void AtomicFileWriter::commit() {
+void AtomicFileWriter::finish() {
+  if (finished_) return;
   flush_buffer();
   if (::fsync(fd_) != 0 && errno != EINVAL && errno != EROFS) fail("fsync failed", errno);
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0) fail("close failed", errno);
+  finished_ = true;
+}
+
+void AtomicFileWriter::commit() {
+  finish();
   if (std::rename(temp_.c_str(), target_.c_str()) != 0) {
     fail("cannot rename " + quoted(temp_) + " to it", errno);
   }

@@ -59,9 +59,18 @@ class AtomicFileWriter {
   // Raw bytes of a binary value.
   void raw(const void* p, std::size_t n) { write(std::string_view(static_cast<const char*>(p), n)); }
 
-  // Flushes, syncs, closes and renames over the target. Throws gdel::Error on failure
+  // Flushes, syncs and closes the temporary file, without renaming it yet: a set of files
+  // that must change together (TetGen's .node/.ele/.neigh) finishes every writer first and
+  // then commits them, so a late write error leaves every target as it was. Throws
+  // gdel::Error on failure (the temporary file is then removed).
+  void finish();
+
+  // finish() (unless done), then renames over the target. Throws gdel::Error on failure
   // (the temporary file is then removed).
   void commit();
+
+  // Bytes handed to the writer so far (the position in the output file).
+  std::uint64_t bytes_written() const { return flushed_ + used_; }
 
   const std::filesystem::path& target() const { return target_; }
   const std::filesystem::path& temp_path() const { return temp_; }
@@ -84,6 +93,8 @@ class AtomicFileWriter {
   std::filesystem::path temp_;
   int fd_ = -1;
   bool committed_ = false;
+  bool finished_ = false;
+  std::uint64_t flushed_ = 0;
   std::vector<char> buffer_;
   std::size_t used_ = 0;
 };

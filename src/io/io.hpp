@@ -40,8 +40,19 @@ struct PointSet {
 // ---------------------------------------------------------------------------------------
 
 // Dispatches on the extension, case-insensitively: .xyz .txt -> read_xyz, .off -> read_off,
-// .ply -> read_ply, .node -> read_node. Any other extension: InvalidInput.
+// .ply -> read_ply, .node -> read_node, .npy -> read_npy. Any other extension: InvalidInput.
 PointSet read_points(const std::filesystem::path& path);
+
+// NumPy .npy (format versions 1.0, 2.0, 3.0): a 2-D array of shape (n, 3) (x y z) or (n, 4)
+// (x y z weight), C or Fortran order, dtype float64, float32 or any integer type
+// (int8..int64, uint8..uint64) in either byte order. Integer values must convert to double
+// exactly. Anything else (other shapes, structured/complex/bool/object dtypes, a truncated
+// file, bytes after the data) is InvalidInput naming the problem.
+PointSet read_npy(const std::filesystem::path& path);
+
+// Weights for `gdel check --weights`: one number per line, '#' comments and blank lines
+// skipped (as in .xyz); or, for a .npy file, an array of shape (n,) or (n, 1).
+std::vector<double> read_weights(const std::filesystem::path& path);
 
 // One point per line: "x y z" or "x y z weight", separated by blanks and/or commas
 // ("1,2,3", "1, 2, 3", "1 2 3"). Blank lines and '#' comments (to the end of the line) are
@@ -97,8 +108,9 @@ void write_ele(const std::filesystem::path& path, std::span<const vid_t> tets,
 void write_neigh(const std::filesystem::path& path, std::span<const tid_t> neighbours);
 
 // Writes base.node, base.ele and (unless neighbours is empty) base.neigh, where base is
-// `base_path` with ".node" etc. appended. All arguments are validated before any file is
-// written; each file is replaced atomically.
+// `base_path` with ".node" etc. appended. All arguments are validated (and no target may be
+// a directory) before any file is written; the three files are written to temporaries and
+// renamed only when all are complete, so a failure while writing leaves the previous set.
 void write_tetgen(const std::filesystem::path& base_path, std::span<const double> xyz,
                   std::span<const vid_t> tets, std::span<const tid_t> neighbours,
                   std::span<const double> weights = {});
@@ -116,5 +128,62 @@ enum class PlyFormat { Ascii, BinaryLittleEndian, BinaryBigEndian };
 void write_ply(const std::filesystem::path& path, std::span<const double> xyz,
                std::span<const double> weights = {},
                PlyFormat format = PlyFormat::BinaryLittleEndian);
+
+// NumPy .npy, version 1.0, C order, this machine's byte order: float64 of shape (n, 3), or
+// (n, 4) with the weight in the last column when weights are given.
+void write_npy(const std::filesystem::path& path, std::span<const double> xyz,
+               std::span<const double> weights = {});
+
+// ---------------------------------------------------------------------------------------
+// Mesh writers: points + tetrahedra (+ neighbours). Every argument is validated before the
+// file is created (sizes, finite coordinates and weights, vertex ids in 0..n-1, neighbours
+// -1 or in 0..m-1, neighbours.size() == tets.size() unless empty), so a bad argument
+// creates no file; then the file is written to a temporary and renamed.
+// ---------------------------------------------------------------------------------------
+
+// VTK XML UnstructuredGrid (.vtu, version 1.0, header_type UInt64), every DataArray
+// format="binary": base64 of [UInt64 byte count] followed, encoded separately, by the raw
+// values in this machine's byte order (byte_order says which). Points Float64 x 3; cells
+// VTK_TETRA (10) with Int32 connectivity and Int64 offsets; cell data "tet_id" (Int32, the
+// row in tets) and, when given, "neighbors" (Int32 x 4); point data "weight" (Float64) when
+// weights are given. VTK_TETRA's order (the base 0,1,2 counter-clockwise seen from vertex 3)
+// is gdel's positive orientation, so tets are written as they are.
+void write_vtu(const std::filesystem::path& path, std::span<const double> xyz, std::span<const vid_t> tets,
+               std::span<const tid_t> neighbours = {}, std::span<const double> weights = {});
+
+// Medit / Gamma Mesh Format, ASCII (.mesh): "MeshVersionFormatted 2" (double precision),
+// "Dimension 3", "Vertices" (n lines "x y z 0"), "Tetrahedra" (m lines "a b c d 0", 1-based
+// vertex ids, in gdel's order), "End". Reference numbers are 0. Neighbours and weights are not
+// part of the format and are not written.
+void write_medit(const std::filesystem::path& path, std::span<const double> xyz, std::span<const vid_t> tets);
+
+// NumPy .npz (a zip archive of .npy members, STORED, i.e. uncompressed, like numpy.savez):
+// "points.npy" float64 (n, 3), "tets.npy" int32 (m, 4), "neighbors.npy" int32 (m, 4) when
+// given, "weights.npy" float64 (n,) when given; this machine's byte order. Zip64 records are
+// used for members or offsets past 4 GiB. Member timestamps are fixed (1980-01-01 00:00) so
+// that equal inputs give byte-identical files.
+void write_npz(const std::filesystem::path& path, std::span<const double> xyz, std::span<const vid_t> tets,
+               std::span<const tid_t> neighbours = {}, std::span<const double> weights = {});
+
+// Output format of a mesh file, by extension (case-insensitive).
+enum class MeshFormat {
+  TetGen,  // .ele, .node, .neigh or no extension: base.node/.ele/.neigh
+  Vtu,     // .vtu
+  Medit,   // .mesh
+  Npz,     // .npz
+};
+
+// The format for `path`; InvalidInput naming the supported extensions for any other one.
+MeshFormat mesh_format(const std::filesystem::path& path);
+
+// The files write_mesh(path, ...) creates or replaces, in order (three for TetGen: the
+// .neigh one only when with_neighbours; one otherwise).
+std::vector<std::filesystem::path> mesh_outputs(const std::filesystem::path& path, bool with_neighbours);
+
+// Writes a mesh in the format of mesh_format(path). TetGen: the base is `path` without a
+// .ele/.node/.neigh extension; all three files are validated, written to temporaries and
+// only then renamed, so a failure leaves the previous set of files as it was.
+void write_mesh(const std::filesystem::path& path, std::span<const double> xyz, std::span<const vid_t> tets,
+                std::span<const tid_t> neighbours = {}, std::span<const double> weights = {});
 
 }  // namespace gdel::io

@@ -382,6 +382,9 @@ PointSet read_body(Body& body, const Header& h, const VertexLayout& v, std::size
       ps.xyz.reserve(3 * cap);
       if (v.weight) ps.weights.reserve(cap);
     }
+    // An element without properties has empty records: nothing to read, however many
+    // (looping over a count such as 10^12 would hang; found by fuzz/ fuzz_ply).
+    if (e.props.empty()) continue;
     if constexpr (std::is_same_v<Body, BinaryBody>) {
       if (!is_vertex && e.fixed_size() > 0) {
         body.skip_fixed(e, e.fixed_size());

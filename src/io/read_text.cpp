@@ -8,6 +8,7 @@
 
 #include "gdel/errors.hpp"
 #include "io/io.hpp"
+#include "io/npy.hpp"
 #include "io/parse.hpp"
 
 namespace gdel::io {
@@ -22,7 +23,17 @@ std::string read_file(const std::filesystem::path& path) {
   if (!f) throw InvalidInput("cannot read '" + path.string() + "': " + std::strerror(errno));
   std::string data;
   const auto size_hint = std::filesystem::file_size(path, ec);
-  if (!ec) data.reserve(static_cast<std::size_t>(size_hint));
+  if (!ec) {
+    // One read of the announced size (+1 to see the end); the chunked loop below takes
+    // over only if the file is longer than announced (a growing file, a pipe).
+    data.resize(static_cast<std::size_t>(size_hint) + 1);
+    const std::size_t got = std::fread(data.data(), 1, data.size(), f.get());
+    data.resize(got);
+    if (got <= static_cast<std::size_t>(size_hint)) {
+      if (std::ferror(f.get())) throw InvalidInput("cannot read '" + path.string() + "': " + std::strerror(errno));
+      return data;
+    }
+  }
   constexpr std::size_t kChunk = std::size_t{1} << 20;
   for (;;) {
     const std::size_t old = data.size();
@@ -363,6 +374,31 @@ std::vector<tid_t> read_neigh(const std::filesystem::path& path) {
 }
 
 // ---------------------------------------------------------------------------------------
+// Weights
+// ---------------------------------------------------------------------------------------
+
+std::vector<double> read_weights(const std::filesystem::path& path) {
+  const std::string data = read_file(path);
+  if (lower(path.extension().string()) == ".npy") {
+    return parse_npy(data, path, NpyShape::Vector).values;
+  }
+  LineReader lines(data, /*hash_comments=*/true);
+  Fields fields;
+  std::string_view line;
+  std::vector<double> w;
+  w.reserve(data.size() / 8);
+  while (lines.next(line)) {
+    fields.split(line);
+    if (fields.size() == 0) continue;
+    if (fields.size() != 1) {
+      fail_at_line(path, lines.line_no(), "expected one weight per line, got " + std::to_string(fields.size()) + " values");
+    }
+    w.push_back(number_field(path, lines.line_no(), fields[0], "weight"));
+  }
+  return w;
+}
+
+// ---------------------------------------------------------------------------------------
 // Dispatch
 // ---------------------------------------------------------------------------------------
 
@@ -372,9 +408,11 @@ PointSet read_points(const std::filesystem::path& path) {
   if (ext == ".off") return read_off(path);
   if (ext == ".ply") return read_ply(path);
   if (ext == ".node") return read_node(path);
+  if (ext == ".npy") return read_npy(path);
   throw InvalidInput("cannot read '" + path.string() + "': unknown point file extension " +
                      (ext.empty() ? std::string("(none)") : "'" + ext + "'") +
-                     "; supported: .xyz .txt (x y z [weight] per line), .off, .ply, .node (TetGen)");
+                     "; supported: .xyz .txt (x y z [weight] per line), .off, .ply, .node (TetGen), "
+                     ".npy (NumPy (n, 3) or (n, 4) array)");
 }
 
 }  // namespace gdel::io

@@ -1,14 +1,16 @@
 // Writers: TetGen .node/.ele/.neigh, .xyz, .off, .ply. All go through AtomicFileWriter.
 #include <bit>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "gdel/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io.hpp"
+#include "io/write_common.hpp"
 
 namespace gdel::io {
-namespace {
+namespace detail {
 
 [[noreturn]] void bad_argument(const std::filesystem::path& path, const std::string& what) {
   throw InvalidInput("cannot write '" + path.string() + "': " + what);
@@ -62,6 +64,35 @@ void check_neighbours(const std::filesystem::path& path, std::span<const tid_t> 
   }
 }
 
+std::size_t check_mesh(const std::filesystem::path& points_path, const std::filesystem::path& tets_path,
+                       const std::filesystem::path& neighbours_path, std::span<const double> xyz,
+                       std::span<const vid_t> tets, std::span<const tid_t> neighbours,
+                       std::span<const double> weights) {
+  const std::size_t n = check_points(points_path, xyz, weights);
+  for (std::size_t i = 0; i < n; ++i) check_finite(points_path, xyz, weights, i);
+  check_tets(tets_path, tets);
+  for (std::size_t t = 0; t < tets.size() / 4; ++t) {
+    for (int k = 0; k < 4; ++k) check_tet_vertex(tets_path, t, tets[4 * t + k], n);
+  }
+  if (!neighbours.empty()) {
+    check_neighbours(neighbours_path, neighbours);
+    if (neighbours.size() != tets.size()) {
+      bad_argument(neighbours_path, std::to_string(neighbours.size() / 4) + " neighbour rows for " +
+                                        std::to_string(tets.size() / 4) + " tetrahedra");
+    }
+    for (std::size_t t = 0; t < neighbours.size() / 4; ++t) {
+      for (int k = 0; k < 4; ++k) check_neighbour(neighbours_path, t, neighbours[4 * t + k], neighbours.size() / 4);
+    }
+  }
+  return n;
+}
+
+}  // namespace detail
+
+using namespace detail;
+
+namespace {
+
 // Writes "[id ]x y z[ weight]\n" (id when with_id).
 void point_line(AtomicFileWriter& w, std::span<const double> xyz, std::span<const double> weights, std::size_t i,
                 bool with_id) {
@@ -104,47 +135,66 @@ std::filesystem::path with_suffix(const std::filesystem::path& base, const char*
 
 }  // namespace
 
-void write_node(const std::filesystem::path& path, std::span<const double> xyz, std::span<const double> weights) {
-  const std::size_t n = check_points(path, xyz, weights);
-  AtomicFileWriter w(path);
+namespace {
+
+// The bodies of the TetGen files; each checks its values as it goes (the single-file
+// writers validate while writing, write_tetgen before).
+void node_body(AtomicFileWriter& w, std::span<const double> xyz, std::span<const double> weights) {
+  const std::size_t n = xyz.size() / 3;
   w.number(std::uint64_t{n});
   w.write(weights.empty() ? " 3 0 0\n" : " 3 1 0\n");
   for (std::size_t i = 0; i < n; ++i) {
-    check_finite(path, xyz, weights, i);
+    check_finite(w.target(), xyz, weights, i);
     point_line(w, xyz, weights, i, /*with_id=*/true);
   }
-  w.commit();
 }
 
-void write_ele(const std::filesystem::path& path, std::span<const vid_t> tets, std::size_t num_points) {
-  check_tets(path, tets);
+void ele_body(AtomicFileWriter& w, std::span<const vid_t> tets, std::size_t num_points) {
   const std::size_t m = tets.size() / 4;
-  AtomicFileWriter w(path);
   w.number(std::uint64_t{m});
   w.write(" 4 0\n");
   for (std::size_t t = 0; t < m; ++t) {
     for (int k = 0; k < 4; ++k) {
       const vid_t v = tets[4 * t + k];
-      if (v < 0 || static_cast<std::size_t>(v) >= num_points) check_tet_vertex(path, t, v, num_points);
+      if (v < 0 || static_cast<std::size_t>(v) >= num_points) check_tet_vertex(w.target(), t, v, num_points);
     }
     index_line(w, t, &tets[4 * t]);
   }
-  w.commit();
 }
 
-void write_neigh(const std::filesystem::path& path, std::span<const tid_t> neighbours) {
-  check_neighbours(path, neighbours);
+void neigh_body(AtomicFileWriter& w, std::span<const tid_t> neighbours) {
   const std::size_t m = neighbours.size() / 4;
-  AtomicFileWriter w(path);
   w.number(std::uint64_t{m});
   w.write(" 4\n");
   for (std::size_t t = 0; t < m; ++t) {
     for (int k = 0; k < 4; ++k) {
       const tid_t v = neighbours[4 * t + k];
-      if (v < -1 || (v >= 0 && static_cast<std::size_t>(v) >= m)) check_neighbour(path, t, v, m);
+      if (v < -1 || (v >= 0 && static_cast<std::size_t>(v) >= m)) check_neighbour(w.target(), t, v, m);
     }
     index_line(w, t, &neighbours[4 * t]);
   }
+}
+
+}  // namespace
+
+void write_node(const std::filesystem::path& path, std::span<const double> xyz, std::span<const double> weights) {
+  check_points(path, xyz, weights);
+  AtomicFileWriter w(path);
+  node_body(w, xyz, weights);
+  w.commit();
+}
+
+void write_ele(const std::filesystem::path& path, std::span<const vid_t> tets, std::size_t num_points) {
+  check_tets(path, tets);
+  AtomicFileWriter w(path);
+  ele_body(w, tets, num_points);
+  w.commit();
+}
+
+void write_neigh(const std::filesystem::path& path, std::span<const tid_t> neighbours) {
+  check_neighbours(path, neighbours);
+  AtomicFileWriter w(path);
+  neigh_body(w, neighbours);
   w.commit();
 }
 
@@ -154,25 +204,28 @@ void write_tetgen(const std::filesystem::path& base_path, std::span<const double
   const auto ele = with_suffix(base_path, ".ele");
   const auto neigh = with_suffix(base_path, ".neigh");
   // Validate everything first, so that a bad argument changes no file.
-  const std::size_t n = check_points(node, xyz, weights);
-  for (std::size_t i = 0; i < n; ++i) check_finite(node, xyz, weights, i);
-  check_tets(ele, tets);
-  for (std::size_t t = 0; t < tets.size() / 4; ++t) {
-    for (int k = 0; k < 4; ++k) check_tet_vertex(ele, t, tets[4 * t + k], n);
-  }
-  if (!neighbours.empty()) {
-    check_neighbours(neigh, neighbours);
-    if (neighbours.size() != tets.size()) {
-      bad_argument(neigh, std::to_string(neighbours.size() / 4) + " neighbour rows for " +
-                              std::to_string(tets.size() / 4) + " tetrahedra");
-    }
-    for (std::size_t t = 0; t < neighbours.size() / 4; ++t) {
-      for (int k = 0; k < 4; ++k) check_neighbour(neigh, t, neighbours[4 * t + k], neighbours.size() / 4);
+  const std::size_t n = check_mesh(node, ele, neigh, xyz, tets, neighbours, weights);
+  // A folder in the way would fail its rename after the others succeeded: refuse up front.
+  for (const auto* p : {&node, &ele, &neigh}) {
+    std::error_code ec;
+    if ((p != &neigh || !neighbours.empty()) && std::filesystem::is_directory(*p, ec)) {
+      throw Error("cannot write '" + p->string() + "': it is a directory");
     }
   }
-  write_node(node, xyz, weights);
-  write_ele(ele, tets, n);
-  if (!neighbours.empty()) write_neigh(neigh, neighbours);
+  // Write every file to its temporary, then rename them all: a write error (disk full) in
+  // any of them leaves the whole previous set in place.
+  AtomicFileWriter wn(node), we(ele);
+  std::optional<AtomicFileWriter> wg;
+  if (!neighbours.empty()) wg.emplace(neigh);
+  node_body(wn, xyz, weights);
+  ele_body(we, tets, n);
+  if (wg) neigh_body(*wg, neighbours);
+  wn.finish();
+  we.finish();
+  if (wg) wg->finish();
+  wn.commit();
+  we.commit();
+  if (wg) wg->commit();
 }
 
 void write_xyz(const std::filesystem::path& path, std::span<const double> xyz, std::span<const double> weights) {
