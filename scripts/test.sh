@@ -15,3 +15,4 @@ if command -v nvcc >/dev/null 2>&1 || [ -x /usr/local/cuda/bin/nvcc ]; then
   cmake --preset cuda >/dev/null
   cmake --build --preset cuda -j "$jobs"
 fi
+bash scripts/test-python.sh

@@ -1,0 +1,60 @@
+"""gdel: exact 3-D Delaunay triangulation on NVIDIA GPUs and multi-core CPUs.
+
+The API follows ``scipy.spatial.Delaunay``: replace ``from scipy.spatial import
+Delaunay`` with ``from gdel import Delaunay``.
+
+>>> import numpy as np, gdel
+>>> tri = gdel.Delaunay(np.random.default_rng(0).random((1000, 3)))
+>>> tri.simplices.shape[1], tri.simplices.dtype
+(4, dtype('int32'))
+>>> gdel.check(tri.points, tri.simplices).delaunay
+True
+
+Exceptions: ValueError for malformed input (shape, dtype, NaN/Inf);
+:class:`DegenerateInputError` (a ValueError) when the points have no 3-D
+triangulation; MemoryError when device memory runs out (attributes ``needed`` and
+``available`` in bytes); :class:`BackendUnavailableError` (a :class:`GdelError`) when
+``device="cuda"`` cannot be honoured; :class:`GdelError` (a RuntimeError) otherwise.
+See docs/python.md for the output contract.
+"""
+
+from . import _core
+from ._check import CheckReport, check
+from ._core import BackendUnavailableError, DegenerateInputError, GdelError
+from ._delaunay import Delaunay, delaunay
+
+__version__: str = _core.version()
+
+#: Names accepted by ``algorithm=``.
+ALGORITHMS: tuple[str, ...] = _core.ALGORITHMS
+#: Names accepted by ``device=`` (and "cuda:N").
+DEVICES: tuple[str, ...] = _core.DEVICES + ("cuda:N",)
+
+for _cls in (GdelError, DegenerateInputError, BackendUnavailableError):
+    _cls.__module__ = "gdel"  # shown as gdel.<Name> in tracebacks
+del _cls
+
+
+def built_with_cuda() -> bool:
+    """True when this build of gdel contains the CUDA backend (a GPU may still be absent)."""
+    return _core.built_with_cuda()
+
+
+def cuda_available() -> bool:
+    """True when this build has the CUDA backend and a CUDA device is visible."""
+    return _core.cuda_device_available()
+
+
+__all__ = [
+    "ALGORITHMS",
+    "DEVICES",
+    "BackendUnavailableError",
+    "CheckReport",
+    "DegenerateInputError",
+    "Delaunay",
+    "GdelError",
+    "built_with_cuda",
+    "check",
+    "cuda_available",
+    "delaunay",
+]

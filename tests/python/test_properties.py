@@ -1,0 +1,181 @@
+"""Property tests (hypothesis) on small random and degenerate point sets: every result
+passes the exact verifier, and on general position it is scipy's triangulation."""
+
+import itertools
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from scipy.spatial import Delaunay as ScipyDelaunay
+
+import gdel
+from helpers import check_neighbors, orient_exact, sorted_rows
+
+ALGORITHMS = ["gdel3d", "gflip3d"]
+
+
+
+
+def _affine_rank(p):
+    """Exact affine rank (rational Gaussian elimination; floats convert exactly)."""
+    rows = [[Fraction(float(v)) for v in r] for r in np.asarray(p)]
+    m = [[a - b for a, b in zip(r, rows[0])] for r in rows[1:]]
+    rank = 0
+    for col in range(3):
+        pivot = next((i for i in range(rank, len(m)) if m[i][col] != 0), None)
+        if pivot is None:
+            continue
+        m[rank], m[pivot] = m[pivot], m[rank]
+        for i in range(len(m)):
+            if i != rank and m[i][col] != 0:
+                f = m[i][col] / m[rank][col]
+                m[i] = [a - f * b for a, b in zip(m[i], m[rank])]
+        rank += 1
+    return rank
+
+
+def _expected_representative(p):
+    first = {}
+    return np.array([first.setdefault(tuple(row), i) for i, row in enumerate(np.asarray(p).tolist())])
+
+
+def _assert_full_contract(p, tri, algorithm):
+    report = gdel.check(p, tri.simplices)
+    assert report.meets_contract(algorithm), report.summary
+    assert report.inverted_tets == 0 and report.unused_points == 0 and report.euler_ok
+    np.testing.assert_array_equal(tri.representative, _expected_representative(p))
+    check_neighbors(tri.simplices, tri.neighbors)
+    if algorithm == "gdel3d":
+        assert report.delaunay and report.degenerate_tets == 0  # no flat tets, even on degenerate input
+    return report
+
+
+# -- general position: random coordinates from a seed ------------------------------
+
+
+@given(n=st.integers(4, 80), seed=st.integers(0, 2**32 - 1), scale=st.sampled_from([1.0, 2.0**-80, 2.0**90]))
+def test_random_sets_match_scipy(n, seed, scale):
+    p = np.random.default_rng(seed).random((n, 3)) * scale
+    tri = gdel.Delaunay(p)
+    _assert_full_contract(p, tri, "gdel3d")
+    ref = ScipyDelaunay(p)
+    assert tri.nsimplex == ref.nsimplex
+    assert sorted_rows(tri.simplices) == sorted_rows(ref.simplices)
+    assert sorted_rows(tri.convex_hull) == sorted_rows(ref.convex_hull)
+
+
+@given(n=st.integers(4, 60), seed=st.integers(0, 2**32 - 1))
+def test_random_sets_gflip3d_valid(n, seed):
+    p = np.random.default_rng(seed).normal(size=(n, 3))
+    tri = gdel.Delaunay(p, algorithm="gflip3d")
+    _assert_full_contract(p, tri, "gflip3d")
+
+
+@given(
+    n=st.integers(4, 40),
+    seed=st.integers(0, 2**32 - 1),
+    k=st.integers(-300, 300),
+)
+def test_power_of_two_scaling_does_not_change_the_triangulation(n, seed, k):
+    # Scaling by 2^k is exact and preserves every predicate: the same triangulation,
+    # including outside the predicates' direct range (the library rescales exactly).
+    p = np.random.default_rng(seed).random((n, 3)) + 0.5
+    a = gdel.Delaunay(p)
+    b = gdel.Delaunay(np.ldexp(p, k))
+    assert sorted_rows(a.simplices) == sorted_rows(b.simplices)
+
+
+# -- degenerate sets: small integer grids (many coplanar and cospherical subsets) ----
+
+grid_point = st.tuples(st.integers(0, 3), st.integers(0, 3), st.integers(0, 3))
+
+
+@pytest.mark.parametrize("algorithm", ALGORITHMS)
+@given(pts=st.lists(grid_point, min_size=4, max_size=40))
+def test_grid_subsets(algorithm, pts):
+    p = np.array(pts, dtype=np.float64)
+    if _affine_rank(p) < 3:
+        with pytest.raises(gdel.DegenerateInputError):
+            gdel.Delaunay(p, algorithm=algorithm)
+        return
+    tri = gdel.Delaunay(p, algorithm=algorithm)
+    _assert_full_contract(p, tri, algorithm)
+    # every input point is located, also among gflip3d's flat tets (NaN transforms)
+    assert (tri.find_simplex(p) >= 0).all()
+
+
+# Integer points on the sphere of radius 3: all cospherical.
+SPHERE3 = sorted(
+    {
+        tuple(s * v for s, v in zip(signs, perm))
+        for base in ((3, 0, 0), (1, 2, 2))
+        for perm in itertools.permutations(base)
+        for signs in itertools.product((1, -1), repeat=3)
+    }
+)
+
+
+@pytest.mark.parametrize("algorithm", ALGORITHMS)
+@given(
+    idx=st.lists(st.integers(0, len(SPHERE3) - 1), min_size=4, max_size=40),
+    center=st.booleans(),
+)
+def test_cospherical_sets(algorithm, idx, center):
+    p = np.array([SPHERE3[i] for i in idx], dtype=np.float64)
+    if center:
+        p = np.concatenate([p, [[0.0, 0.0, 0.0]]])
+    if _affine_rank(p) < 3:
+        with pytest.raises(gdel.DegenerateInputError):
+            gdel.Delaunay(p, algorithm=algorithm)
+        return
+    tri = gdel.Delaunay(p, algorithm=algorithm)
+    _assert_full_contract(p, tri, algorithm)
+    # Exact orientation: positive; gflip3d may leave flat tets on such input.
+    allowed = {1} if algorithm == "gdel3d" else {0, 1}
+    for t in tri.simplices[:20]:
+        assert orient_exact(*p[t]) in allowed
+
+
+@given(
+    base=st.lists(st.tuples(*[st.floats(-1e3, 1e3, allow_nan=False, width=32)] * 3), min_size=4, max_size=25),
+    dup=st.lists(st.integers(0, 24), max_size=10),
+)
+def test_float32_sets_with_duplicates(base, dup):
+    b = np.array(base, dtype=np.float32)
+    p = np.concatenate([b, b[[d % len(b) for d in dup]]]) if dup else b
+    if _affine_rank(p) < 3:
+        with pytest.raises(gdel.DegenerateInputError):
+            gdel.Delaunay(p)
+        return
+    tri = gdel.Delaunay(p)
+    _assert_full_contract(p.astype(np.float64), tri, "gdel3d")
+    assert (tri.vertex_to_simplex[tri.representative != np.arange(len(p))] == -1).all()
+
+
+@given(
+    pts=st.lists(grid_point, min_size=4, max_size=30),
+    queries=st.lists(st.tuples(*[st.integers(-1, 7)] * 3), min_size=1, max_size=30),
+)
+def test_find_simplex_on_grid_sets(pts, queries):
+    # Half-integer queries over an integer grid: exactly on faces, edges and vertices
+    # as often as strictly inside or outside. A query is outside the hull exactly when
+    # it lies strictly beyond some (outward) hull face; otherwise find_simplex returns
+    # a simplex whose barycentric coordinates are all >= -tol.
+    p = np.array(pts, dtype=np.float64)
+    if _affine_rank(p) < 3:
+        return
+    tri = gdel.Delaunay(p)
+    x = np.array(queries, dtype=np.float64) / 2
+    found = tri.find_simplex(x)
+    hull = tri.convex_hull
+    for q, s in zip(x, found):
+        outside = any(orient_exact(p[a], p[b], p[c], q) > 0 for a, b, c in hull)
+        assert (s < 0) == outside, (q, s)
+        if s >= 0:
+            t = tri.transform[s]
+            c3 = t[:3] @ (q - t[3])
+            assert min(c3.min(), 1 - c3.sum()) >= -100 * np.finfo(float).eps
+    # every input point lies in (the closure of) some simplex
+    assert (tri.find_simplex(p) >= 0).all()
