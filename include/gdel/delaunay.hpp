@@ -49,6 +49,8 @@ struct Options {
   // of candidates in a working set (pumping, default 8).
   int grid = 0;
   int min_candidates = 8;
+  // gdel::regular: fill RegularTriangulation::certificates (a proof per redundant point).
+  bool certificates = false;
 };
 
 struct Stats {
@@ -71,6 +73,9 @@ struct Stats {
   // gstar4d: grid side, candidate pairs in the working sets, and whether the exact
   // certificate of its result failed so that gdel3d recomputed it (0 or 1)
   std::int64_t grid = 0, working_set_pairs = 0, certificate_fallbacks = 0;
+  // greg3d (gdel::regular): stars that died (their points proved redundant by a death
+  // certificate), and all redundant points (dead, hidden duplicates, upper hull only)
+  std::int64_t dead_stars = 0, redundant_points = 0;
   std::int64_t peak_bytes = 0;         // peak backend memory (device memory for CUDA)
   std::string verify_summary;          // with Options::verify
   std::string to_string() const;

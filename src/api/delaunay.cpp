@@ -30,10 +30,11 @@ std::string Stats::to_string() const {
   s << "  rounds " << rounds << ", flip iterations " << flip_iterations << ", flips 2-3 " << flips23 << ", 3-2 "
     << flips32 << ", exact evaluations " << exact_evaluations << ", failed vertices " << failed_vertices
     << ", peak memory " << peak_bytes / (1024.0 * 1024.0) << " MiB";
-  if (algorithm == "gstar4d")
-    s << "\n  gstar4d: grid " << grid << "^3, working-set pairs " << working_set_pairs << ", stars " << stars_built
-      << ", splay rounds " << splay_rounds << ", insertions " << splay_insertions << ", certificate fallbacks "
-      << certificate_fallbacks;
+  if (algorithm == "gstar4d" || algorithm == "greg3d")
+    s << "\n  " << algorithm << ": grid " << grid << "^3, working-set pairs " << working_set_pairs << ", stars "
+      << stars_built << ", splay rounds " << splay_rounds << ", insertions " << splay_insertions
+      << ", certificate fallbacks " << certificate_fallbacks;
+  if (algorithm == "greg3d") s << ", dead stars " << dead_stars << ", redundant points " << redundant_points;
   if (algorithm == "gdel3d")
     s << "\n  repair: failed vertices " << repair_failed_vertices << ", stars built " << stars_built
       << ", stars pulled " << stars_pulled << ", splay rounds " << splay_rounds << ", insertions "

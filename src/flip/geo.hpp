@@ -27,6 +27,11 @@ struct Geo {
   const double* xyz;        // n + 1 points (internal order), the last is K
   const std::int64_t* sid;  // SoS index per internal id (original input index; K: n_input)
   vid_t inf;                // internal id of ∞ (= n)
+  // Weights per internal id (n + 1 values; nullptr = unweighted). With weights the
+  // lifting is |p|^2 - w: orient4 without ∞ becomes the power test (lifted orientation
+  // of the regular triangulation), and a star may die (star.hpp: every facet beyond).
+  // Only the star splaying engine reads it; gFlip3D's tests (insphere) ignore it.
+  const double* w = nullptr;
 
   GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
 
@@ -69,6 +74,17 @@ struct Geo {
     int j = -1;
     for (int i = 0; i < 5; ++i)
       if (v[i] == inf) j = i;
+    if (j < 0 && w) {
+      if constexpr (Exact) {
+        return geom::power_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), w[v[0]], w[v[1]], w[v[2]],
+                                    w[v[3]], w[v[4]], sid[v[0]], sid[v[1]], sid[v[2]], sid[v[3]], sid[v[4]],
+                                    work);
+      } else {
+        int s = geom::power_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), w[v[0]], w[v[1]], w[v[2]],
+                                   w[v[3]], w[v[4]]);
+        return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
+      }
+    }
     if (j < 0) {
       if constexpr (Exact) {
         return geom::insphere_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), sid[v[0]], sid[v[1]],

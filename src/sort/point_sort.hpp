@@ -38,9 +38,12 @@ void lexicographic_order(par::Context<B>& ctx, const double* X, std::int64_t n, 
 }
 
 // rep[i] = smallest index of a point equal to point i (rep[i] == i for the points
-// kept when duplicates are removed). Returns the number of distinct points.
+// kept when duplicates are removed). Returns the number of distinct points. With
+// weights W (regular triangulation), the representative is the heaviest of the equal
+// points (the others are hidden by it), the smallest index among equally heavy ones.
 template <class B>
-std::int64_t duplicate_representatives(par::Context<B>& ctx, const double* X, std::int64_t n, std::int64_t* rep) {
+std::int64_t duplicate_representatives(par::Context<B>& ctx, const double* X, std::int64_t n, std::int64_t* rep,
+                                       const double* W = nullptr) {
   if (n == 0) return 0;
   par::Buffer<std::int64_t, B> order(ctx, static_cast<std::size_t>(n));
   std::int64_t* o = order.data();
@@ -53,7 +56,10 @@ std::int64_t duplicate_representatives(par::Context<B>& ctx, const double* X, st
   std::int64_t distinct = par::reduce_sum(ctx, sp, static_cast<std::size_t>(n));
   par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t k) {
     if (!sp[k]) return;
-    for (std::int64_t j = k; j < n && (j == k || !sp[j]); ++j) rep[o[j]] = o[k];
+    std::int64_t best = o[k];
+    for (std::int64_t j = k + 1; W && j < n && !sp[j]; ++j)
+      if (W[o[j]] > W[best]) best = o[j];
+    for (std::int64_t j = k; j < n && (j == k || !sp[j]); ++j) rep[o[j]] = best;
   });
   return distinct;
 }

@@ -13,6 +13,10 @@
 // (gDel3D: from the triangulation T; they are convex there). ∞ never gets a star; a
 // proof that ∞ is inside the star of s is handed to every star holding a link
 // triangle with both s and ∞ (the stars that make up "∞'s star").
+// Weighted points (Geo::w, gReg3D, ALGORITHMS.md §6): a star dies when a point is
+// beyond all its facets (its point is redundant); its death certificate (5 points whose
+// lifted simplex holds it, certify_deaths) is sent to every live star whose link holds
+// the dead point, which removes it there; dead stars take no requests and emit no tets.
 #pragma once
 
 #include <algorithm>
@@ -54,8 +58,9 @@ GDEL_HD inline bool sorted_contains(const U64* a, I64 n, U64 k) {
 
 // Inserts q into the star of s (star_insert) and records in out[k, kend) the pair
 // (s, x) of every vertex x that left the star, and (s, q) if q drowned. Running out of
-// room or a broken star sets *err.
-GDEL_HD inline void insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count,
+// room or a broken star sets *err. Returns star_insert's result (kStarDead: weighted
+// points only; the caller marks the star dead and stops inserting into it).
+GDEL_HD inline int insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count,
                                      std::int32_t cap, vid_t s, vid_t q, double* work, U64* out, I64& k, I64 kend,
                                      std::int32_t* err) {
   auto record = [&](vid_t x) {
@@ -64,7 +69,8 @@ GDEL_HD inline void insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S
   };
   const int r = star_insert(g, T, S, count, cap, s, q, work, record);
   if (r == kDrowned) record(q);
-  else if (r != kInserted) *err = r == kStarFull ? 2 : 1;
+  else if (r != kInserted && r != kStarDead) *err = r == kStarFull ? 2 : 1;
+  return r;
 }
 
 // Plain pointers to the stars, for kernels.
@@ -75,10 +81,13 @@ struct StarView {
   std::int32_t* count;  // star -> triangles in use, [0, count)
   Tri* tri;
   std::uint8_t* state;
+  vid_t* killer;        // star -> the vertex that killed it (weighted points), -1 while alive
+  vid_t* cert;          // star -> 5 vertices whose lifted simplex holds it (dead stars), else -1
+  GDEL_HD bool dead(I64 st) const { return killer[st] >= 0; }
 };
 
 struct SplayStats {
-  I64 rounds = 0, insertions = 0, stars_pulled = 0, proofs = 0;
+  I64 rounds = 0, insertions = 0, stars_pulled = 0, proofs = 0, dead = 0;
 };
 
 template <class B>
@@ -86,7 +95,8 @@ class Splayer {
  public:
   Splayer(Context<B>& ctx, flip::Geo g, vid_t num_vertices)
       : ctx_(ctx), g_(g), star_of_(ctx, static_cast<std::size_t>(num_vertices)), vert_(ctx),
-        begin_(ctx), cap_(ctx), count_(ctx), tri_(ctx), state_(ctx), history_(ctx), inf_proof_key_(ctx),
+        begin_(ctx), cap_(ctx), count_(ctx), killer_(ctx), cert_(ctx), tri_(ctx), state_(ctx), history_(ctx),
+        inf_proof_key_(ctx),
         inf_proof_(ctx), error_(ctx, 1) {
     par::fill(ctx, star_of_.data(), star_of_.size(), std::int32_t(-1));
     par::fill(ctx, error_.data(), std::size_t(1), std::int32_t(0));
@@ -96,7 +106,8 @@ class Splayer {
   I64 slot_count() const { return slots_; }
   const std::int32_t* star_of() { return star_of_.data(); }
   StarView view() {
-    return StarView{vert_.data(), begin_.data(), cap_.data(), count_.data(), tri_.data(), state_.data()};
+    return StarView{vert_.data(), begin_.data(), cap_.data(), count_.data(), tri_.data(), state_.data(),
+                    killer_.data(), cert_.data()};
   }
   SplayStats& stats() { return ss_; }
 
@@ -111,6 +122,10 @@ class Splayer {
     begin_.resize(static_cast<std::size_t>(s0 + k + 1));
     cap_.resize(static_cast<std::size_t>(s0 + k));
     count_.resize(static_cast<std::size_t>(s0 + k));
+    killer_.resize(static_cast<std::size_t>(s0 + k));
+    cert_.resize(static_cast<std::size_t>(5 * (s0 + k)));
+    vid_t* kl = killer_.data();
+    vid_t* ce = cert_.data();
     vid_t* vp = vert_.data();
     I64* bp = begin_.data();
     std::int32_t* cp = cap_.data();
@@ -129,6 +144,8 @@ class Splayer {
       bp[s] = base + op[i];
       cp[s] = ic[i];
       np[s] = 0;
+      kl[s] = -1;
+      for (int c = 0; c < 5; ++c) ce[5 * s + c] = -1;
       so[in[i]] = static_cast<std::int32_t>(s);
     });
     slots_ = base + total;
@@ -282,12 +299,16 @@ class Splayer {
       star_simplex(g, T, S, me, first, kTriNew, work);
       std::int32_t count = 4;
       for (I64 i = a + 4; i < b; ++i)
-        insert_recording(g, T, S, count, sv.cap[s], me, ov[i], work, gp, gk, gend, ep);
+        if (insert_recording(g, T, S, count, sv.cap[s], me, ov[i], work, gp, gk, gend, ep) == kStarDead) {
+          sv.killer[s] = ov[i];
+          break;
+        }
       sv.count[s] = count;
       up[j] = gk - rmp[j];
     });
     throw_if_error("building stars");
     gone = pack_pairs(gp, rmp, up, k);
+    certify_deaths();
     return s0;
   }
 
@@ -343,6 +364,7 @@ class Splayer {
     I64* ssp = slot_star.data();
     par::fill(ctx_, ssp, slot_star.size(), I64(-1));
     par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+      if (sv.dead(s)) return;  // a dead (redundant) vertex has no tets
       for (std::int32_t i = 0; i < sv.count[s]; ++i) ssp[sv.begin[s] + i] = s;
     });
     auto candidate = [=] GDEL_HD(I64 q, vid_t* tet) -> bool {
@@ -353,7 +375,7 @@ class Splayer {
       for (int i = 0; i < 3; ++i) tet[1 + i] = tr.v[i];
       for (int i = 1; i < 4; ++i) {
         if (tet[i] == inf) return false;
-        if (so[tet[i]] >= 0 && tet[i] < tet[0]) return false;  // owned by a smaller star
+        if (so[tet[i]] >= 0 && !sv.dead(so[tet[i]]) && tet[i] < tet[0]) return false;  // owned by a smaller star
       }
       return true;
     };
@@ -489,6 +511,10 @@ class Splayer {
     par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_HD(I64 s, double* work) {
       const Tri* T = sv.tri + sv.begin[s];
       I64 c = 0;
+      if (sv.dead(s)) {
+        bp[s] = 0;
+        return;
+      }
       for (std::int32_t i = 0; i < sv.count[s]; ++i)
         for (std::int32_t j = 0; j < sv.count[s]; ++j)
           for (int k = 0; k < 3; ++k) {
@@ -535,6 +561,7 @@ class Splayer {
     const std::size_t k = par::copy_if(ctx_, rp, out.data(), static_cast<std::size_t>(n), [=] GDEL_HD(U64 key) {
       if (sorted_contains(hp, nh, key)) return false;
       const std::int32_t s = so[key_target(key)];
+      if (sv.dead(s)) return false;  // a dead star takes no more points
       return !star_has(sv.tri + sv.begin[s], sv.count[s], key_vertex(key));
     });
     out.resize(k);
@@ -600,12 +627,60 @@ class Splayer {
       I64 k = rmp[j];
       const I64 kend = rmp[j + 1];
       for (I64 i = a; i < b; ++i)
-        insert_recording(g, T, S, count, sv.cap[s], sv_vert, key_vertex(rp[i]), work, gp, k, kend, ep);
+        if (insert_recording(g, T, S, count, sv.cap[s], sv_vert, key_vertex(rp[i]), work, gp, k, kend, ep) ==
+            kStarDead) {
+          sv.killer[s] = key_vertex(rp[i]);
+          break;
+        }
       sv.count[s] = count;
       up[j] = k - rmp[j];
     });
     throw_if_error("insertion");
     gone = pack_pairs(gp, rmp, up, static_cast<I64>(nh));
+    certify_deaths();
+  }
+
+  // Death certificates (ALGORITHMS.md §6.4) of the stars that died since the last call:
+  // cert = (killer k, e, t0, t1, t2) with the star's vertex inside their lifted 4-simplex
+  // (star_proof with reflect). Stars holding a dead vertex receive these five points
+  // (checks()), which removes it from their links.
+  void certify_deaths() {
+    if (nst_ == 0 || !g_.w) return;
+    const StarView sv = view();
+    const flip::Geo g = g_;
+    std::int32_t* ep = error_.data();
+    Buffer<I64, B> fresh(ctx_, static_cast<std::size_t>(nst_));
+    I64* fp = fresh.data();
+    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_HD(I64 s, double* work) {
+      fp[s] = 0;
+      if (!sv.dead(s) || sv.cert[5 * s] >= 0) return;
+      fp[s] = 1;
+      vid_t out[4];
+      const vid_t k = sv.killer[s];
+      if (!star_proof(g, sv.tri + sv.begin[s], sv.count[s], sv.vert[s], k, out, work, /*reflect=*/true)) {
+        ep[0] = 9;
+        return;
+      }
+      sv.cert[5 * s] = k;
+      for (int c = 0; c < 4; ++c) sv.cert[5 * s + 1 + c] = out[c];
+    });
+    throw_if_error("death certificate");
+    ss_.dead += par::reduce_sum(ctx_, fp, static_cast<std::size_t>(nst_));
+  }
+
+  // The death certificate of every dead star, host copy: (star vertex, 5 vertices).
+  std::vector<vid_t> death_certificates() {
+    std::vector<vid_t> out;
+    if (nst_ == 0) return out;
+    auto kl = killer_.to_host();
+    auto ce = cert_.to_host();
+    auto vv = vert_.to_host();
+    for (I64 s = 0; s < nst_; ++s) {
+      if (kl[s] < 0) continue;
+      out.push_back(vv[s]);
+      for (int c = 0; c < 5; ++c) out.push_back(ce[5 * s + c]);
+    }
+    return out;
   }
 
   // The pairs recorded per item j in raw[room[j], room[j] + used[j]), gathered, sorted
@@ -654,10 +729,12 @@ class Splayer {
       const StarView sv = view();
       gone.resize(static_cast<std::size_t>(n0));
       const std::size_t kg = par::copy_if(ctx_, ga, gone.data(), static_cast<std::size_t>(n0), [=] GDEL_HD(U64 k) {
+        // a dead star needs no proofs: its certificate reaches every star holding it
+        if (sv.dead(so[key_target(k)])) return false;
         const vid_t v = key_vertex(k);
         if (v == inf) return true;
         const std::int32_t st = so[v];
-        return st >= 0 && star_has(sv.tri + sv.begin[st], sv.count[st], key_target(k));
+        return st >= 0 && !sv.dead(st) && star_has(sv.tri + sv.begin[st], sv.count[st], key_target(k));
       });
       gone.resize(kg);
     }
@@ -738,14 +815,25 @@ class Splayer {
       }
       return (a < ni && (ikp[a] >> 32) == (lo >> 32)) ? static_cast<I64>(ikp[a] & 0xffffffffu) : -1;
     };
+    // a link vertex whose star died: its certificate's points go to this star
+    const std::int32_t* so = star_of_.data();
+    const bool weighted = g_.w != nullptr;
+    auto dead_vertex = [=] GDEL_HD(vid_t x) -> std::int32_t {  // the dead star of x, or -1
+      if (!weighted || x == inf) return -1;
+      const std::int32_t st = so[x];
+      return (st >= 0 && sv.dead(st)) ? st : -1;
+    };
     par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
       const Tri* T = sv.tri + sv.begin[s];
       const std::uint8_t* S = sv.state + sv.begin[s];
       I64 c = 0;
-      for (std::int32_t i = 0; i < sv.count[s]; ++i) {
-        if (tri_kind(S[i]) == kTriNew) c += 9;
-        if (ni > 0 && tri_pos(T[i], inf) >= 0) c += 12;
-      }
+      if (!sv.dead(s))
+        for (std::int32_t i = 0; i < sv.count[s]; ++i) {
+          if (tri_kind(S[i]) == kTriNew) c += 9;
+          if (ni > 0 && tri_pos(T[i], inf) >= 0) c += 12;
+          for (int q = 0; q < 3 && weighted; ++q)
+            if (dead_vertex(T[i].v[q]) >= 0) c += 5;
+        }
       cp[s] = c;
     });
     const I64 total = par::counts_to_offsets(ctx_, cp, static_cast<std::size_t>(nst_));
@@ -758,8 +846,16 @@ class Splayer {
       const vid_t me = sv.vert[s];
       I64 k = cp[s];
       const I64 kend = cp[s + 1];
-      for (std::int32_t i = 0; i < sv.count[s]; ++i) {
+      for (std::int32_t i = 0; i < sv.count[s] && !sv.dead(s); ++i) {
         const vid_t* v = T[i].v;
+        for (int q = 0; q < 3 && weighted; ++q) {
+          const std::int32_t d = dead_vertex(v[q]);
+          if (d < 0) continue;
+          for (int c = 0; c < 5; ++c) {
+            const vid_t y = sv.cert[5 * d + c];
+            np[k++] = (y < 0 || y == inf || y == me) ? ~U64(0) : pair_key(me, y);
+          }
+        }
         if (tri_kind(S[i]) == kTriNew) {
           set_kind(S[i], kTriChecked);
           const vid_t tet[4] = {me, v[0], v[1], v[2]};
@@ -800,6 +896,7 @@ class Splayer {
   Buffer<vid_t, B> vert_;
   Buffer<I64, B> begin_;
   Buffer<std::int32_t, B> cap_, count_;
+  Buffer<vid_t, B> killer_, cert_;  // weighted points: per star, see StarView
   Buffer<Tri, B> tri_;
   Buffer<std::uint8_t, B> state_;
   Buffer<U64, B> history_;

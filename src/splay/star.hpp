@@ -64,7 +64,10 @@ GDEL_HD inline std::int32_t star_locate(const flip::Geo& g, const Tri* T, std::i
   return -1;
 }
 
-enum InsertResult : int { kInserted = 0, kDrowned = 1, kStarBroken = -1, kStarFull = -2 };
+// kStarDead (weighted points only, Geo::w): q is beyond every facet of the star, so s
+// lies inside the hull of its star and q: s is redundant (hidden) and its star dies.
+// The star is left as it was before q, for the death certificate (star_proof).
+enum InsertResult : int { kInserted = 0, kDrowned = 1, kStarDead = 2, kStarBroken = -1, kStarFull = -2 };
 
 GDEL_HD inline int tri_pos(const Tri& t, vid_t x) {
   return t.v[0] == x ? 0 : t.v[1] == x ? 1 : t.v[2] == x ? 2 : -1;
@@ -183,7 +186,7 @@ GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_
   };
   if (r == count) {
     restore();
-    return kStarBroken;
+    return g.w ? kStarDead : kStarBroken;
   }
   // a boundary edge (a beyond triangle with a non-beyond neighbour), and their number
   std::int32_t t0 = -1, k0 = -1, edges = 0;
@@ -290,8 +293,15 @@ GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_
 // Confinement proof (§4.6): v is drowned in the convex star of s (beneath every facet);
 // finds link vertices e, t0, t1, t2 with v in the cone from s over them. Returns false
 // only if the star is not convex around v.
+// Death certificate (§6.4, reflect = true): v is the killer k, beyond every facet of the
+// star of s. Then s - k points into the cone of the star, and the link triangle t (not
+// holding e = the first link vertex) whose simplicial cone (s; e, t) holds that direction
+// gives s inside the 4-simplex (k, e, t0, t1, t2): s is redundant. Testing the virtual
+// point 2s - k against the planes (s, e, ti, tj) is testing k with the sign reversed (the
+// 5x5 determinant is linear in its last row, and the row of s repeats), under the same
+// perturbation.
 GDEL_HD inline bool star_proof(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t v, vid_t* out,
-                               double* work) {
+                               double* work, bool reflect = false) {
   if (count <= 0) return false;
   const vid_t e = T[0].v[0];
   for (std::int32_t i = 0; i < count; ++i) {
@@ -302,7 +312,8 @@ GDEL_HD inline bool star_proof(const flip::Geo& g, const Tri* T, std::int32_t co
       const vid_t ti = t.v[k], tj = t.v[(k + 1) % 3], tk = t.v[(k + 2) % 3];
       const vid_t a[5] = {s, e, ti, tj, v};
       const vid_t b[5] = {s, e, ti, tj, tk};
-      ok = g.orient4_any(a, work) == g.orient4_any(b, work);
+      const int sv = g.orient4_any(a, work);
+      ok = (reflect ? -sv : sv) == g.orient4_any(b, work);
     }
     if (ok) {
       out[0] = e;

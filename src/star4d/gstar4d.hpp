@@ -14,6 +14,8 @@
 
 #include <chrono>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "flip/gflip3d.hpp"
 #include "gdel/delaunay.hpp"
@@ -23,9 +25,16 @@
 
 namespace gdel::star4d {
 
+// Weighted points (gReg3D, ALGORITHMS.md §6): `weights` holds m + 1 weights in internal
+// order (nullptr: Delaunay). The digital Voronoi diagram and the working sets ignore the
+// weights (they only propose candidates); the stars use the power lifting, and a star
+// whose point turns out redundant dies (splay/star.hpp). `deaths` (if given) receives a
+// death certificate per dead star: (star vertex, killer, e, t0, t1, t2), internal ids.
 template <class B>
 void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid, I64 m, const double* lo,
-             const double* hi, const Options& opt, Stats& st, Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr) {
+             const double* hi, const Options& opt, Stats& st, Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr,
+             const double* weights = nullptr, std::vector<vid_t>* deaths = nullptr) {
+  const char* name = weights ? "greg3d" : "gstar4d";
   auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
   auto t0 = std::chrono::steady_clock::now();
   {
@@ -39,31 +48,33 @@ void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid
     DigitalVoronoi<B> dv = digital_voronoi(ctx, P.data(), m, lo, hi, po);  // freed on return
     st.grid = dv.W;
     ctx.synchronize();
-    st.stages.push_back({"gstar4d digital Voronoi (PBA)", since(t0)});
+    st.stages.push_back({std::string(name) + " digital Voronoi (PBA)", since(t0)});
     t0 = std::chrono::steady_clock::now();
     WorkingSetOptions wo;
     wo.min_candidates = opt.min_candidates;
     WorkingSets<B> w = working_sets(ctx, dv, wo);
     ctx.synchronize();
-    st.stages.push_back({"gstar4d working sets", since(t0)});
+    st.stages.push_back({std::string(name) + " working sets", since(t0)});
     return w;
   }();
   st.working_set_pairs = static_cast<I64>(ws.ids.size());
   t0 = std::chrono::steady_clock::now();
-  const flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m)};
+  const flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m), weights};
   StarStage<B> stage(ctx, g, m);
   stage.splay(ws.offsets.data(), ws.ids.data());
   ctx.synchronize();
-  st.stages.push_back({"gstar4d stars + splaying", since(t0)});
+  st.stages.push_back({std::string(name) + " stars + splaying", since(t0)});
   t0 = std::chrono::steady_clock::now();
   stage.extract(tets, nbr);
   ctx.synchronize();
-  st.stages.push_back({"gstar4d tets", since(t0)});
+  st.stages.push_back({std::string(name) + " tets", since(t0)});
   const auto& r = stage.result();
   st.stars_built = r.stars;
   st.splay_rounds = r.splay.rounds;
   st.splay_insertions = r.splay.insertions;
   st.flat_tets_removed = r.flat_removed;
+  st.dead_stars = r.splay.dead;
+  if (deaths) *deaths = stage.splayer().death_certificates();
   st.exact_evaluations += r.exact_evaluations;
 }
 

@@ -1,0 +1,9 @@
+// CUDA instantiation of gdel::regular (gReg3D).
+#include "api/regular_impl.hpp"
+
+namespace gdel::cuda_backend {
+api::RegularRun regular(std::span<const double> points, std::span<const double> weights, const Options& options) {
+  par::Context<par::Cuda> ctx(options.device);
+  return api::regular_on(ctx, points, weights, options);
+}
+}  // namespace gdel::cuda_backend
