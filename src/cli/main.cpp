@@ -2,6 +2,7 @@
 //
 //   gdel delaunay IN -o OUT [--algorithm A] [--device D] [--check] [--stats] [--quiet]
 //   gdel delaunay --example DIST:N -o OUT ...       (built-in generated input)
+//   gdel regular IN --weights W -o OUT [--redundant R.txt] [--device D] [--check] [--stats] [--quiet]
 //   gdel check POINTS TETS.ele [--weights W] [--device D]
 //   gdel generate DIST N -o OUT [--seed S]
 //   gdel bench [--dist D,..] [--n N,..] [--algorithm A,..] [--device D,..] [--repeat R] [--json F]
@@ -27,9 +28,11 @@
 #include "cli/progress.hpp"
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
+#include "gdel/regular.hpp"
 #include "gdel/verify.hpp"
 #include "gdel/version.hpp"
 #include "gen/generators.hpp"
+#include "io/atomic_file.hpp"
 #include "io/io.hpp"
 
 namespace {
@@ -129,6 +132,24 @@ int main(int argc, char** argv) {
   del->add_flag("--terminal-flipping", terminal, "gFlip3D's insert-all-then-flip variant (for study)");
   del->add_flag("--stats", stats, "print time per stage, counts and memory");
   add_common(del, common);
+
+  // regular -------------------------------------------------------------------------------
+  std::string rin, rweights, rout, rredundant, rdevice = "auto";
+  bool rcheck = false, rstats = false;
+  auto* reg = app.add_subcommand("regular", "regular (weighted Delaunay) triangulation of weighted points (gReg3D)");
+  reg->add_option("input", rin, "points file: .xyz .txt .off .ply .node .npy (weights from --weights, or the "
+                                "file's own: a .node attribute or a .ply 'weight' property)")
+      ->required();
+  reg->add_option("--weights", rweights, "weights (squared radii, any sign): one per line, or a .npy of shape (n,)");
+  reg->add_option("-o,--output", rout,
+                  "output mesh, format by extension as for `gdel delaunay`; every input point is in it (redundant "
+                  "ones in no tet), with its weight where the format holds one")
+      ->required();
+  reg->add_option("--redundant", rredundant, "also write the ids of the redundant (hidden) points, one a line");
+  reg->add_option("--device", rdevice, "cpu | cuda | auto")->check(CLI::IsMember(kDevices))->capture_default_str();
+  reg->add_flag("--check", rcheck, "verify the result exactly (regular mode) before writing; exit 5 if it fails");
+  reg->add_flag("--stats", rstats, "print time per stage, counts and memory");
+  add_common(reg, common);
 
   // check ---------------------------------------------------------------------------------
   std::string cpoints, ctets, cweights;
@@ -261,6 +282,78 @@ int main(int argc, char** argv) {
         if (check) std::printf("check: %s\n", check_summary.c_str());
       }
       if (stats) {
+        std::printf("%s\n", t.stats.to_string().c_str());
+        std::printf("  command: read %.3f s, triangulate %.3f s, verify %.3f s, write %.3f s\n", read_s, tri_s,
+                    verify_s, write_s);
+      }
+      return kOk;
+    }
+
+    if (*reg) {
+      try {
+        gdel::io::mesh_format(rout);
+      } catch (const gdel::InvalidInput& e) {
+        throw UsageError(e.what());
+      }
+      std::vector<fs::path> outputs = gdel::io::mesh_outputs(rout, /*with_neighbours=*/true);
+      if (!rredundant.empty()) outputs.push_back(rredundant);
+      for (const auto& p : outputs) preflight_output(p);
+      gdel::Options o;
+      o.backend = parse_backend(rdevice);
+      const gdel::Backend backend = gdel::resolve_backend(o.backend);
+      auto t0 = Clock::now();
+      progress.phase("reading " + rin);
+      gdel::io::PointSet ps = gdel::io::read_points(rin);
+      if (!rweights.empty()) {
+        progress.phase("reading " + rweights);
+        ps.weights = gdel::io::read_weights(rweights);
+        if (ps.weights.size() != ps.size())
+          throw gdel::InvalidInput(rweights + ": " + std::to_string(ps.weights.size()) + " weights for " +
+                                   std::to_string(ps.size()) + " points in " + rin);
+      } else if (!ps.has_weights()) {
+        throw UsageError(rin + " holds no weights: give --weights W");
+      }
+      const double read_s = since(t0);
+      progress.phase("triangulating " + std::to_string(ps.size()) + " weighted points (greg3d, " +
+                     gdel::to_string(backend) + ")");
+      t0 = Clock::now();
+      gdel::RegularTriangulation t = gdel::regular(ps.xyz, ps.weights, o);
+      const double tri_s = since(t0);
+      double verify_s = 0;
+      std::string check_summary;
+      if (rcheck) {
+        progress.phase("verifying " + std::to_string(t.num_tets()) + " tets");
+        t0 = Clock::now();
+        const gdel::VerifyReport r = gdel::verify(ps.xyz, t.tets, ps.weights, o.backend);
+        verify_s = since(t0);
+        check_summary = r.summary();
+        if (!r.delaunay()) {
+          progress.print([&] { std::printf("check: %s\n", check_summary.c_str()); });
+          return fail(kCheck, "check failed: greg3d result is " + failure_reason(r, "greg3d", true) + "; nothing written");
+        }
+      }
+      progress.phase("writing " + join(outputs));
+      t0 = Clock::now();
+      writing([&] {
+        if (!rredundant.empty()) {
+          gdel::io::AtomicFileWriter f(rredundant);
+          for (std::int32_t v : t.redundant) {
+            f.number(v);
+            f.put('\n');
+          }
+          f.commit();
+        }
+        gdel::io::write_mesh(rout, ps.xyz, t.tets, t.neighbors, ps.weights);
+      });
+      const double write_s = since(t0);
+      progress.stop();
+      if (!common.quiet) {
+        std::printf("%zu weighted points -> %lld tets, %zu redundant points, in %.3f s (greg3d, %s); wrote %s\n",
+                    ps.size(), static_cast<long long>(t.num_tets()), t.redundant.size(), tri_s,
+                    t.stats.backend.c_str(), join(outputs).c_str());
+        if (rcheck) std::printf("check: %s\n", check_summary.c_str());
+      }
+      if (rstats) {
         std::printf("%s\n", t.stats.to_string().c_str());
         std::printf("  command: read %.3f s, triangulate %.3f s, verify %.3f s, write %.3f s\n", read_s, tri_s,
                     verify_s, write_s);

@@ -165,6 +165,46 @@ TEST_F(CliTest, DelaunayWritesEveryFormatAndCheckAcceptsIt) {
                                                  "mesh.ele", "mesh.neigh", "mesh.node", "pts.xyz"}));
 }
 
+TEST_F(CliTest, RegularWritesEveryPointAndTheRedundantList) {
+  write_points("pts.xyz", 1500, 4);
+  const auto pts = gdel::io::read_points(work("pts.xyz")).xyz;
+  std::string w;
+  std::vector<double> wv;
+  for (int i = 0; i < 1500; ++i) {
+    wv.push_back(((i * 7919) % 1000) * 2e-5);  // 0 .. 0.02: a share of the points hidden
+    w += std::to_string(wv.back()) + "\n";
+  }
+  text("w.txt", w);
+  wv = gdel::io::read_weights(work("w.txt"));  // what gdel reads
+  Result r = gdel({"regular", "pts.xyz", "--weights", "w.txt", "-o", "reg", "--redundant", "hidden.txt",
+                   "--device", "cpu", "--check"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("check: OK"), std::string::npos) << r.out;
+  const auto node = gdel::io::read_points(work("reg.node"));
+  EXPECT_EQ(node.xyz, pts);      // every input point, redundant ones included
+  EXPECT_EQ(node.weights, wv);   // with its weight
+  const auto tets = gdel::io::read_ele(work("reg.ele"));
+  const auto rep = gdel::verify(pts, tets, wv, gdel::Backend::Cpu);
+  EXPECT_TRUE(rep.delaunay()) << rep.summary();
+  const auto hidden = gdel::io::read_weights(work("hidden.txt"));  // one number a line
+  EXPECT_EQ(static_cast<std::int64_t>(hidden.size()), rep.redundant_points);
+  EXPECT_GT(hidden.size(), 0u);
+  // the weights may come from the .node file itself; then `gdel check` reads them there too
+  r = gdel({"regular", "reg.node", "-o", "again.ele", "-q", "--device", "cpu"});
+  EXPECT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(gdel::io::read_ele(work("again.ele")), tets);
+  r = gdel({"check", "reg.node", "reg.ele"});
+  EXPECT_EQ(r.rc, 0) << r.err;
+  // failures: no weights (usage), wrong count (invalid input); nothing written
+  const auto before = listing();
+  expect_failure(gdel({"regular", "pts.xyz", "-o", "x.ele"}), 1, "no weights");
+  text("short.txt", "1\n2\n");
+  expect_failure(gdel({"regular", "pts.xyz", "--weights", "short.txt", "-o", "x.ele"}), 2, "2 weights for 1500");
+  auto after = listing();
+  after.erase(std::remove(after.begin(), after.end(), "short.txt"), after.end());
+  EXPECT_EQ(after, before);
+}
+
 TEST_F(CliTest, NpyInputExampleInputAndStats) {
   gdel::io::write_npy(work("pts.npy"), gdel::gen::ball(500, 2));
   Result r = gdel({"delaunay", "pts.npy", "-o", "a.vtu", "--device", "cpu", "--stats"});
