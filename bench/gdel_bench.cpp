@@ -7,7 +7,12 @@
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
 //   methods: gdel3d-cuda, gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            cgal, cgal-par   (default: all available)
+//   weighted points (regular triangulation): greg3d-cuda, greg3d-cpu, cgal-regular, cgal-regular-par,
+//            with weights scale * h^2 * U(0,1), h the mean spacing of the points' bounding box
+//            (--weight-scale, default 3: about half the points redundant on uniform input).
 #include <algorithm>
+#include <cmath>
+#include <random>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -16,6 +21,7 @@
 #include <vector>
 
 #include "gdel/delaunay.hpp"
+#include "gdel/regular.hpp"
 #include "gdel/verify.hpp"
 #include "gen/generators.hpp"
 #include "io/io.hpp"
@@ -58,6 +64,7 @@ int main(int argc, char** argv) {
   std::size_t cpu_max = 1000000;
   std::string json;
   bool do_verify = true;
+  double weight_scale = 3.0;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -76,6 +83,7 @@ int main(int argc, char** argv) {
     else if (a == "--cpu-max") cpu_max = static_cast<std::size_t>(std::stod(next()));
     else if (a == "--json") json = next();
     else if (a == "--no-verify") do_verify = false;
+    else if (a == "--weight-scale") weight_scale = std::stod(next());
     else {
       std::fprintf(stderr, "gdel-bench: unknown argument %s\n", a.c_str());
       return 1;
@@ -105,6 +113,21 @@ int main(int argc, char** argv) {
       const auto pts = is_file ? file_pts : gdel::gen::generate(gdel::gen::parse_distribution(dn), n0, 20261122);
       const std::size_t n = pts.size() / 3;
       if (is_file && n0 != sizes.front()) break;
+      std::vector<double> wts;  // for the regular-triangulation methods
+      {
+        double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+        for (std::size_t i = 0; i < n; ++i)
+          for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], pts[3 * i + a]);
+            hi[a] = std::max(hi[a], pts[3 * i + a]);
+          }
+        const double vol = std::max(1e-300, (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]));
+        const double h = std::cbrt(vol / double(std::max<std::size_t>(n, 1)));
+        std::mt19937_64 rng(7);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        wts.resize(n);
+        for (double& x : wts) x = weight_scale * h * h * u(rng);
+      }
       for (auto& m : methods) {
         Row r;
         r.dist = dn;
@@ -161,6 +184,40 @@ int main(int argc, char** argv) {
             if (exact) r.valid = v.delaunay() && v.degenerate_tets == 0;
             if (v.hull_reflex_edges) r.note += " reflex hull edges " + std::to_string(v.hull_reflex_edges);
           }
+        } else if (m.rfind("greg3d", 0) == 0) {
+          gdel::Options o;
+          o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
+          if (o.backend == gdel::Backend::Cuda && !have_cuda) continue;
+          if (o.backend == gdel::Backend::Cpu && n > cpu_max) continue;
+          gdel::RegularTriangulation t;
+          for (int k = 0; k < repeat; ++k) {
+            t = gdel::regular(pts, wts, o);
+            times.push_back(t.stats.seconds);
+          }
+          r.tets = t.num_tets();
+          r.failed = t.stats.certificate_fallbacks;
+          r.peak = t.stats.peak_bytes;
+          std::ostringstream st;
+          for (auto& [name, s] : t.stats.stages) st << name << "=" << s << ";";
+          r.stages = st.str();
+          r.note = "hidden " + std::to_string(t.redundant.size()) + ", dead stars " + std::to_string(t.stats.dead_stars) +
+                   ", rounds " + std::to_string(t.stats.splay_rounds);
+          if (do_verify) {  // (gdel::regular certifies its result; this is the benchmark's own check)
+            auto v = gdel::verify(pts, t.tets, wts, have_cuda ? gdel::Backend::Cuda : gdel::Backend::Cpu);
+            r.non_ld = v.non_delaunay_facets;
+            r.flat = v.degenerate_tets;
+            r.valid = v.delaunay() && v.degenerate_tets == 0;
+          }
+        } else if (m == "cgal-regular" || m == "cgal-regular-par") {
+          gdel::bench::PeerResult p;
+          for (int k = 0; k < repeat; ++k) {
+            p = gdel::bench::cgal_regular(pts, wts, m == "cgal-regular-par");
+            if (!p.available) break;
+            times.push_back(p.seconds);
+          }
+          if (!p.available) continue;
+          r.tets = p.tets;
+          r.note = p.note;
         } else if (m == "cgal" || m == "cgal-par") {
           gdel::bench::PeerResult p;
           for (int k = 0; k < repeat; ++k) {
@@ -188,8 +245,9 @@ int main(int argc, char** argv) {
     double cg = 0, cgp = 0;
     for (auto& q : rows)
       if (q.dist == r.dist && q.n == r.n) {
-        if (q.method == "cgal") cg = q.median_s;
-        if (q.method == "cgal-par") cgp = q.median_s;
+        const bool reg = r.method.rfind("greg3d", 0) == 0 || r.method.rfind("cgal-regular", 0) == 0;
+        if (q.method == (reg ? "cgal-regular" : "cgal")) cg = q.median_s;
+        if (q.method == (reg ? "cgal-regular-par" : "cgal-par")) cgp = q.median_s;
       }
     std::string dn = r.dist.substr(r.dist.find_last_of('/') + 1);
     std::printf("%-10s %9zu %-22s %9.4f %8.2f %8.2f %10lld %9lld %9.1f %9lld %8lld %6lld %s %s\n", dn.c_str(), r.n,

@@ -8,4 +8,9 @@ PeerResult cgal_delaunay(const std::vector<double>&, bool) {
   r.note = "benchmark built without CGAL";
   return r;
 }
+PeerResult cgal_regular(const std::vector<double>&, const std::vector<double>&, bool) {
+  PeerResult r;
+  r.note = "benchmark built without CGAL";
+  return r;
+}
 }  // namespace gdel::bench
