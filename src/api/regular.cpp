@@ -96,20 +96,14 @@ RegularTriangulation regular(std::span<const double> points, std::span<const dou
   if (weights.size() != points.size() / 3)
     throw InvalidInput("weights: expected one weight per point (" + std::to_string(points.size() / 3) + "), got " +
                        std::to_string(weights.size()));
-  std::vector<double> sp, sw;
-  std::span<const double> P = points, W = weights;
+  std::vector<double> sp;
+  std::span<const double> P = points;
   if (k != 0) {
     sp = api::scaled(points, k);
-    sw = api::scaled(weights, 2 * k);  // weights are squared lengths
     P = sp;
-    W = sw;
   }
-  for (std::size_t i = 0; i < W.size(); ++i)
-    if (!std::isfinite(W[i]) || !geom::weight_in_range(W[i]))
-      throw InvalidInput("weights: row " + std::to_string(i) + " is " +
-                         (std::isfinite(weights[i]) ? "outside the exact range (|w| <= 2^400 after the coordinates' "
-                                                      "scaling, and not below 2^-356 unless 0)"
-                                                    : "not finite (" + std::to_string(weights[i]) + ")"));
+  const std::vector<double> sw = api::scaled_weights(weights, k, "weights");  // squared lengths: 2^(2k)
+  std::span<const double> W = sw;
   api::RegularRun run = run_once(P, W, options);
   // Certificate: a valid triangulation of the hull, every facet locally regular, every
   // unused point redundant, no flat tet (exact). Star splaying's local rules cannot see

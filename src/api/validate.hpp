@@ -40,12 +40,31 @@ inline int validate_points(std::span<const double> pts) {
   // Move the largest magnitude just under the top of the range.
   int ehi = std::ilogb(hi), elo = std::ilogb(lo);
   int k = 199 - ehi;
-  if (!geom::coordinate_in_range(std::ldexp(lo, k)) || !geom::coordinate_in_range(std::ldexp(hi, k)))
+  // (a non-zero magnitude that the scaling flushes to zero would pass coordinate_in_range)
+  const double slo = std::ldexp(lo, k), shi = std::ldexp(hi, k);
+  if (slo == 0 || !geom::coordinate_in_range(slo) || !geom::coordinate_in_range(shi))
     throw InvalidInput("points: coordinate magnitudes span 2^" + std::to_string(elo) + " .. 2^" +
                        std::to_string(ehi) +
                        ", too wide to be handled exactly (the ratio of the largest to the smallest non-zero "
                        "|coordinate| must be at most 2^352)");
   return k;
+}
+
+// Weights (squared lengths) scaled with the coordinates' factor 2^k, i.e. by 2^(2k), and
+// checked: finite, in the exact range, and not flushed to zero by the scaling. Throws
+// InvalidInput naming the first offending row. `what` prefixes the message.
+inline std::vector<double> scaled_weights(std::span<const double> w, int k, const std::string& what) {
+  std::vector<double> s(w.begin(), w.end());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!std::isfinite(w[i]))
+      throw InvalidInput(what + ": row " + std::to_string(i) + " is not finite (" + std::to_string(w[i]) + ")");
+    s[i] = std::ldexp(w[i], 2 * k);
+    if ((w[i] != 0 && s[i] == 0) || !geom::weight_in_range(s[i]))
+      throw InvalidInput(what + ": row " + std::to_string(i) + " (" + std::to_string(w[i]) +
+                         ") is outside the exact range (|w| in 2^-356 .. 2^400, or 0, after the coordinates' scaling "
+                         "by 2^" + std::to_string(k) + ")");
+  }
+  return s;
 }
 
 inline std::vector<double> scaled(std::span<const double> pts, int k) {

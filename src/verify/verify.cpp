@@ -53,18 +53,13 @@ VerifyReport verify(std::span<const double> points, std::span<const std::int32_t
     throw InvalidInput("verify: " + std::to_string(weights.size()) + " weights for " + std::to_string(n) + " points");
   // Exact scaling by a power of two into the predicates' range (weights scale by its square).
   const int k = api::validate_points(points);
-  std::vector<double> sp, sw;
+  std::vector<double> sp;
   if (k != 0) {
     sp = api::scaled(points, k);
     points = sp;
-    if (!weights.empty()) {
-      sw = api::scaled(weights, 2 * k);
-      weights = sw;
-    }
   }
-  for (std::size_t i = 0; i < weights.size(); ++i)
-    if (!std::isfinite(weights[i]) || !geom::weight_in_range(weights[i]))
-      throw InvalidInput("verify: weight " + std::to_string(i) + " is not finite or outside the exact range");
+  const std::vector<double> sw = api::scaled_weights(weights, k, "verify: weights");
+  weights = sw;
   const double* w = weights.empty() ? nullptr : weights.data();
   auto t0 = std::chrono::steady_clock::now();
   VerifyReport r;

@@ -264,6 +264,15 @@ inline void greg3d_special_cases(Backend b) {
   w[17] = std::nan("");
   EXPECT_THROW(regular(P, w, o), InvalidInput);
   w[17] = 0;
+  {  // a weight that the coordinates' exact scaling (here 2^-133) would flush to zero
+    auto Q = P;
+    for (double& x : Q) x *= 1e100;
+    std::vector<double> wq(50, 0.0);
+    wq[3] = 1e-300;
+    EXPECT_THROW(regular(Q, wq, o), InvalidInput);
+    wq[3] = 0.0;
+    EXPECT_NO_THROW(regular(Q, wq, o));
+  }
   Options g = o;
   g.algorithm = Algorithm::gdel3d;
   EXPECT_THROW(regular(P, w, g), InvalidInput);
