@@ -1,6 +1,7 @@
 // Delaunay triangulation of 3-D points: the public C++ API.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -51,6 +52,14 @@ struct Options {
   int min_candidates = 8;
   // gdel::regular: fill RegularTriangulation::certificates (a proof per redundant point).
   bool certificates = false;
+  // On the CUDA backend: when the device runs out of memory (OutOfDeviceMemory), run the
+  // same algorithm on the CPU backend instead of throwing (Stats::backend then reads
+  // "cpu (fallback: ...)"). The device memory is released before the CPU run.
+  bool fallback_to_cpu = false;
+  // CUDA backend: the most device memory (bytes) one call may hold; 0 = no limit but the
+  // device's. Exceeding it raises OutOfDeviceMemory as a full device would (for tests and
+  // for sharing a GPU).
+  std::size_t device_memory_limit = 0;
 };
 
 struct Stats {

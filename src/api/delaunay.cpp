@@ -93,7 +93,14 @@ Triangulation delaunay(std::span<const double> points, const Options& options) {
   Triangulation t;
   if (resolve_backend(options.backend) == Backend::Cuda) {
 #if defined(GDEL_HAVE_CUDA)
-    t = cuda_backend::delaunay(work, options);
+    try {
+      t = cuda_backend::delaunay(work, options);
+    } catch (const OutOfDeviceMemory& e) {
+      if (!options.fallback_to_cpu) throw;
+      par::Context<par::Cpu> ctx;
+      t = api::delaunay_on(ctx, work, options);
+      t.stats.backend = std::string("cpu (fallback: ") + e.what() + ")";
+    }
 #endif
   } else {
     par::Context<par::Cpu> ctx;

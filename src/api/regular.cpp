@@ -28,7 +28,15 @@ namespace {
 api::RegularRun run_once(std::span<const double> points, std::span<const double> weights, const Options& options) {
   if (resolve_backend(options.backend) == Backend::Cuda) {
 #if defined(GDEL_HAVE_CUDA)
-    return cuda_backend::regular(points, weights, options);
+    try {
+      return cuda_backend::regular(points, weights, options);
+    } catch (const OutOfDeviceMemory& e) {
+      if (!options.fallback_to_cpu) throw;
+      par::Context<par::Cpu> ctx;
+      api::RegularRun r = api::regular_on(ctx, points, weights, options);
+      r.out.stats.backend = std::string("cpu (fallback: ") + e.what() + ")";
+      return r;
+    }
 #endif
   }
   par::Context<par::Cpu> ctx;

@@ -4,6 +4,7 @@
 namespace gdel::cuda_backend {
 api::RegularRun regular(std::span<const double> points, std::span<const double> weights, const Options& options) {
   par::Context<par::Cuda> ctx(options.device);
+  ctx.memory().set_limit(options.device_memory_limit);
   return api::regular_on(ctx, points, weights, options);
 }
 }  // namespace gdel::cuda_backend

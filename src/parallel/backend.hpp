@@ -38,6 +38,9 @@ class MemoryStats {
     }
   }
   void sub(std::size_t bytes) { current_.fetch_sub(bytes, std::memory_order_relaxed); }
+  // A cap on current() for the CUDA allocator (0: none), from Options::device_memory_limit.
+  void set_limit(std::size_t bytes) { limit_ = bytes; }
+  std::size_t limit() const { return limit_; }
   std::size_t current() const { return current_.load(std::memory_order_relaxed); }
   std::size_t peak() const { return peak_.load(std::memory_order_relaxed); }
   void reset_peak() { peak_.store(current(), std::memory_order_relaxed); }
@@ -45,6 +48,7 @@ class MemoryStats {
  private:
   std::atomic<std::size_t> current_{0};
   std::atomic<std::size_t> peak_{0};
+  std::size_t limit_ = 0;
 };
 
 template <class B>

@@ -46,6 +46,12 @@ template <>
 struct Memory<Cuda> {
   static void* allocate(Context<Cuda>& c, std::size_t bytes) {
     if (bytes == 0) return nullptr;
+    const std::size_t lim = c.memory().limit();
+    if (lim != 0 && c.memory().current() + bytes > lim)
+      throw OutOfDeviceMemory("out of device memory: needed " + std::to_string(bytes) + " more bytes, " +
+                                  std::to_string(lim - std::min(lim, c.memory().current())) +
+                                  " left of the limit of " + std::to_string(lim) + " (Options::device_memory_limit)",
+                              bytes, lim - std::min(lim, c.memory().current()));
     void* p = nullptr;
     cudaError_t e = cudaMallocAsync(&p, bytes, c.stream());
     if (e == cudaErrorMemoryAllocation) {

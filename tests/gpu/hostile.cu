@@ -25,3 +25,31 @@ TEST(HostileGpu, TwentyMillionPoints) {
   const auto t = gdel::delaunay(pts, o);
   gdel::test::expect_exact_delaunay(pts, t, gdel::Backend::Cuda);
 }
+// Device memory: a shortage raises OutOfDeviceMemory naming needed and free bytes, leaks
+// nothing (the next call in the process succeeds), and fallback_to_cpu answers on the CPU.
+TEST(HostileGpu, OutOfDeviceMemoryIsCleanAndRecoverable) {
+  auto pts = gdel::gen::generate(gdel::gen::Distribution::Uniform, 200000, 8);
+  std::vector<double> w(200000, 0.0);
+  gdel::Options o;
+  o.backend = gdel::Backend::Cuda;
+  o.canonical_order = true;
+  o.device_memory_limit = std::size_t(4) << 20;  // 4 MiB: far too little
+  try {
+    gdel::delaunay(pts, o);
+    ADD_FAILURE() << "expected OutOfDeviceMemory";
+  } catch (const gdel::OutOfDeviceMemory& e) {
+    EXPECT_GT(e.needed, 0u);
+    EXPECT_NE(std::string(e.what()).find("device_memory_limit"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(gdel::regular(pts, w, o), gdel::OutOfDeviceMemory);
+  o.device_memory_limit = 0;
+  const auto ok = gdel::delaunay(pts, o);  // same process, full device: succeeds
+  gdel::test::expect_exact_delaunay(pts, ok, gdel::Backend::Cuda);
+  o.device_memory_limit = std::size_t(4) << 20;
+  o.fallback_to_cpu = true;
+  const auto f = gdel::delaunay(pts, o);
+  EXPECT_EQ(f.stats.backend.rfind("cpu (fallback", 0), 0u) << f.stats.backend;
+  EXPECT_EQ(f.tets, ok.tets);
+  const auto r = gdel::regular(pts, w, o);
+  EXPECT_EQ(r.stats.backend.rfind("cpu (fallback", 0), 0u) << r.stats.backend;
+}
