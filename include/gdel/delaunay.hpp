@@ -113,3 +113,94 @@ struct Triangulation {
 Triangulation delaunay(std::span<const double> points, const Options& options = {});
 
 }  // namespace gdel
+
+// ---------------------------------------------------------------------------------------
+// Points already in CUDA device memory, results left there (CUDA builds).
+// ---------------------------------------------------------------------------------------
+namespace gdel {
+
+// Frees memory that a DeviceArray handed over with release(): cudaFree on `device`.
+// No-op for nullptr; never throws (an error is swallowed, as in a destructor).
+void device_free(void* p, int device) noexcept;
+
+// n elements of T in CUDA device memory on `device`, allocated with cudaMalloc by gdel
+// and owned by this object (freed by its destructor) until release() hands the pointer
+// over; whoever takes it frees it with device_free(p, device()). Move-only.
+template <class T>
+class DeviceArray {
+ public:
+  DeviceArray() = default;
+  DeviceArray(T* p, std::int64_t n, int device) : p_(p), n_(n), device_(device) {}
+  ~DeviceArray() { reset(); }
+  DeviceArray(DeviceArray&& o) noexcept : p_(o.p_), n_(o.n_), device_(o.device_) { o.p_ = nullptr, o.n_ = 0; }
+  DeviceArray& operator=(DeviceArray&& o) noexcept {
+    if (this != &o) {
+      reset();
+      p_ = o.p_, n_ = o.n_, device_ = o.device_;
+      o.p_ = nullptr, o.n_ = 0;
+    }
+    return *this;
+  }
+  DeviceArray(const DeviceArray&) = delete;
+  DeviceArray& operator=(const DeviceArray&) = delete;
+  T* data() const { return p_; }
+  std::int64_t size() const { return n_; }
+  int device() const { return device_; }
+  // The caller now owns the memory (free it with device_free(p, device())).
+  T* release() {
+    T* p = p_;
+    p_ = nullptr, n_ = 0;
+    return p;
+  }
+  void reset() {
+    device_free(p_, device_);
+    p_ = nullptr, n_ = 0;
+  }
+
+ private:
+  T* p_ = nullptr;
+  std::int64_t n_ = 0;
+  int device_ = 0;
+};
+
+// Input of delaunay_device(): n points as 3n coordinates (x0,y0,z0,x1,...), C-contiguous,
+// in device memory of CUDA device `device` (or managed memory).
+struct DevicePoints {
+  const void* data = nullptr;
+  std::int64_t n = 0;
+  bool float32 = false;      // float (converted to double on the device) instead of double
+  int device = 0;            // CUDA ordinal the memory belongs to; the work runs there
+  // cudaStream_t on which the producer wrote the points (nullptr: the legacy default
+  // stream). gdel's own stream waits for the work queued on it so far; the call returns
+  // only after gdel's work is complete, so the results are ready for any stream.
+  void* stream = nullptr;
+};
+
+// The result of delaunay_device(): the arrays of Triangulation, in device memory of the
+// input's device (int32, same layout and contract as Triangulation's vectors).
+struct DeviceTriangulation {
+  DeviceArray<std::int32_t> tets;             // 4m
+  DeviceArray<std::int32_t> neighbors;        // 4m
+  DeviceArray<std::int32_t> failed_vertices;  // gflip3d (ascending), else empty
+  DeviceArray<std::int32_t> representative;   // n
+  Stats stats;
+  // The device pointer whose coordinates the algorithm read: DevicePoints::data itself
+  // (no copy of the points at all), unless converted_input says that a device-side
+  // float64 copy was made (float32 input, or coordinates scaled by a power of two into
+  // the predicates' exact range).
+  const void* points_read = nullptr;
+  bool converted_input = false;
+  std::int64_t num_tets() const { return tets.size() / 4; }
+};
+
+// gdel::delaunay for points in device memory: the same validation (NaN/Inf, exact
+// range, run on the device by reductions; only a few scalars reach the host),
+// duplicate removal, Hilbert sort and algorithm on the CUDA backend, without copying
+// the points or the results through the host. Options: algorithm gdel3d, gflip3d or
+// Auto (gstar4d's exact certificate and Options::verify / canonical_order run on host
+// arrays: use gdel::delaunay for those); backend Auto or Cuda; Options::device is
+// ignored (DevicePoints::device decides). Throws as gdel::delaunay does, plus
+// BackendUnavailable in a build without CUDA and InvalidInput for the options above.
+DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& options = {});
+
+}  // namespace gdel

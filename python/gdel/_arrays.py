@@ -4,12 +4,18 @@
   jax CPU arrays, ...) go to the compiled layer as they are. It reads C-contiguous
   float64 in place and converts anything else (float32, integers, any strides) to
   contiguous float64 exactly once. Results are numpy arrays.
-* CUDA arrays (torch, cupy, jax) are NOT zero-copy yet: the C++ API takes host
-  memory only, so :func:`_delaunay_on_device` copies the points to the host through
-  the array's own framework, triangulates (on the GPU the array lives on, unless
-  ``device`` says otherwise), and each result is copied back to that GPU as an array
-  of the same framework. When the C++ API gains a device-pointer entry point, that
-  function is the one place to change.
+* torch and cupy CUDA arrays take the zero-copy path (:func:`_delaunay_on_device`):
+  the compiled layer hands their device pointer to ``gdel::delaunay_device``, which
+  triangulates them on their own GPU without a host copy, and the results come back
+  as int32 arrays of the same framework on the same device, owning gdel's device
+  memory. Only a float32 input (converted on the device), a non-contiguous one (made
+  contiguous on the device by the framework) or an integer one (converted on the
+  device) is copied, and only device-to-device.
+* Other CUDA inputs take an explicit host round trip (:func:`_delaunay_via_host`):
+  jax arrays, ``device="cpu"`` or a ``device="cuda:N"`` other than the array's,
+  ``algorithm="gstar4d"`` (its exact certificate runs on host arrays), and builds
+  or machines without CUDA. Results are still arrays of the input's framework on its
+  device.
 """
 
 from __future__ import annotations
@@ -43,12 +49,21 @@ def _torch_to_host(x: Any) -> Any:
     return x.detach().cpu()
 
 
+def _torch_to_numpy(x: Any) -> np.ndarray:
+    return x.detach().cpu().numpy()
+
+
 def _torch_from_host(a: np.ndarray, like: Any) -> Any:
     torch = importlib.import_module("torch")
     return torch.from_numpy(np.ascontiguousarray(a)).to(like.device)
 
 
 def _cupy_to_host(x: Any) -> Any:
+    cupy = importlib.import_module("cupy")
+    return cupy.asnumpy(x)
+
+
+def _cupy_to_numpy(x: Any) -> np.ndarray:
     cupy = importlib.import_module("cupy")
     return cupy.asnumpy(x)
 
@@ -72,11 +87,13 @@ def _jax_from_host(a: np.ndarray, like: Any) -> Any:
 class _Framework:
     to_host: Callable[[Any], Any]
     from_host: Callable[[np.ndarray, Any], Any]
+    # A device array of this framework as a numpy array (a device -> host copy).
+    to_numpy: Callable[[Any], np.ndarray] = np.asarray
 
 
 _FRAMEWORKS = {
-    "torch": _Framework(_torch_to_host, _torch_from_host),
-    "cupy": _Framework(_cupy_to_host, _cupy_from_host),
+    "torch": _Framework(_torch_to_host, _torch_from_host, _torch_to_numpy),
+    "cupy": _Framework(_cupy_to_host, _cupy_from_host, _cupy_to_numpy),
     "jax": _Framework(_jax_to_host, _jax_from_host),
     "jaxlib": _Framework(_jax_to_host, _jax_from_host),
 }
@@ -116,6 +133,12 @@ class Origin:
         if not self.on_device:
             return a
         return _FRAMEWORKS[self.framework].from_host(a, self.like)
+
+    def to_numpy(self, a: Any) -> np.ndarray:
+        """An array of the origin's kind as numpy (a device-to-host copy for CUDA)."""
+        if isinstance(a, np.ndarray):
+            return a
+        return _FRAMEWORKS[self.framework].to_numpy(a)
 
 
 HOST = Origin()
@@ -200,15 +223,23 @@ def resolve_device(device: str, origin: Origin) -> tuple[str, int]:
 
 @dataclass
 class RawResult:
-    """The compiled layer's output, on the host, plus where results must go."""
+    """The compiled layer's output plus where results must go.
 
-    points: np.ndarray  # (n, 3) float64, C-contiguous
-    simplices: np.ndarray
-    neighbors: np.ndarray
-    failed_vertices: np.ndarray
-    representative: np.ndarray
+    Host path (``on_device`` False): every array is numpy on the host, and
+    ``Origin.give`` turns one into an array of the input's kind when it is read. Device
+    path (``on_device`` True): ``simplices``, ``neighbors``, ``failed_vertices`` and
+    ``representative`` already are arrays of the input's framework on its GPU, and
+    ``points`` is the (device) float array that was triangulated.
+    """
+
+    points: Any  # host: (n, 3) float64, C-contiguous; device: the input (or its device-side conversion)
+    simplices: Any
+    neighbors: Any
+    failed_vertices: Any
+    representative: Any
     stats: dict[str, Any]
     origin: Origin
+    on_device: bool = False
 
 
 def _delaunay_on_host(host: Any, algorithm: str, backend: str, ordinal: int, origin: Origin) -> RawResult:
@@ -216,18 +247,104 @@ def _delaunay_on_host(host: Any, algorithm: str, backend: str, ordinal: int, ori
     # The float64 copy the library made when it converted the input; otherwise the
     # input itself already was contiguous float64 and is viewed, not copied.
     pts = r["points"] if r["points"] is not None else as_numpy(host)
+    r["stats"]["device_input"] = None  # the C++ side read host memory
     return RawResult(
         pts, r["simplices"], r["neighbors"], r["failed_vertices"], r["representative"], r["stats"], origin
     )
 
 
-def _delaunay_on_device(points: Any, algorithm: str, backend: str, ordinal: int, origin: Origin) -> RawResult:
-    # NOT zero-copy yet. The C++ API (gdel::delaunay) takes host memory only, so the
-    # points make an explicit device -> host copy here and every result a host ->
-    # device copy when it is read (Origin.give). A device-pointer C++ entry point will
-    # replace this body: pass the CUDA pointer and stream, get device arrays back.
+def _delaunay_via_host(points: Any, algorithm: str, backend: str, ordinal: int, origin: Origin) -> RawResult:
+    """A CUDA input through the host: an explicit device -> host copy of the points here,
+    and a host -> device copy of each result when it is read (Origin.give)."""
     host = to_host(points, origin, "points")
     return _delaunay_on_host(host, algorithm, backend, ordinal, origin)
+
+
+# ---------------------------------------------------------------------------
+# The zero-copy path: torch / cupy CUDA arrays read in place by gdel::delaunay_device
+# ---------------------------------------------------------------------------
+
+_EXACT_INT_LIMIT = 2**53  # integers beyond it may round when made float64
+_INEXACT_INT = "points: an integer value is not exactly representable as float64 (|x| must be below 2^53)"
+
+
+def _torch_prepare(x: Any) -> tuple[Any, int]:
+    """(C-contiguous float32/float64 tensor on x's device, its current stream)."""
+    torch = importlib.import_module("torch")
+    x = x.detach()
+    if x.dtype not in (torch.float32, torch.float64):
+        if x.dtype.is_floating_point or x.dtype.is_complex or x.dtype == torch.bool:
+            raise ValueError(f"points: expected float32 or float64 values (or integers), got dtype {x.dtype}")
+        x = x.to(torch.float64)  # on the device; rounding is monotonic, so the check below is exact
+        if x.numel() and bool((x.abs() >= _EXACT_INT_LIMIT).any()):
+            raise ValueError(_INEXACT_INT)
+    x = x.contiguous()  # the same tensor when it already is
+    return x, int(torch.cuda.current_stream(x.device).cuda_stream)
+
+
+def _cupy_prepare(x: Any) -> tuple[Any, int]:
+    """(C-contiguous float32/float64 cupy array on x's device, its current stream)."""
+    cupy = importlib.import_module("cupy")
+    with x.device:
+        if x.dtype not in (cupy.float32, cupy.float64):
+            if x.dtype.kind not in "iu":
+                raise ValueError(f"points: expected float32 or float64 values (or integers), got dtype {x.dtype}")
+            x = x.astype(cupy.float64)
+            if x.size and bool((cupy.abs(x) >= _EXACT_INT_LIMIT).any()):
+                raise ValueError(_INEXACT_INT)
+        x = cupy.ascontiguousarray(x)  # the same array when it already is
+        return x, int(cupy.cuda.get_current_stream().ptr)
+
+
+_DEVICE_PREPARE: dict[str, Callable[[Any], tuple[Any, int]]] = {"torch": _torch_prepare, "cupy": _cupy_prepare}
+
+
+def _empty_like(framework: str, like: Any) -> Any:
+    if framework == "torch":
+        torch = importlib.import_module("torch")
+        return torch.empty((0,), dtype=torch.int32, device=like.device)
+    cupy = importlib.import_module("cupy")
+    with like.device:
+        return cupy.empty((0,), dtype=cupy.int32)
+
+
+def zero_copy_possible(origin: Origin, algorithm: str, backend: str, ordinal: int) -> bool:
+    """Whether a CUDA input goes to gdel::delaunay_device (else: the host round trip)."""
+    return (
+        origin.framework in _DEVICE_PREPARE
+        and backend in ("auto", "cuda")
+        and ordinal == origin.device_id
+        and algorithm != "gstar4d"  # its certificate runs on host arrays (docs/python.md)
+        and _core.cuda_device_available()
+    )
+
+
+def _delaunay_on_device(points: Any, algorithm: str, backend: str, ordinal: int, origin: Origin) -> RawResult:
+    """torch / cupy CUDA arrays: no host copy. The compiled layer passes the array's
+    device pointer (and the framework's current stream, which gdel waits for) to
+    gdel::delaunay_device; the results are int32 arrays of the same framework on the
+    same device that own gdel's device memory. Anything else takes the host round trip."""
+    if not zero_copy_possible(origin, algorithm, backend, ordinal):
+        return _delaunay_via_host(points, algorithm, backend, ordinal, origin)
+    x, stream = _DEVICE_PREPARE[origin.framework](points)
+    r = _core.delaunay_device(x, origin.framework, algorithm, stream)
+
+    def arr(name: str, empty_shape: tuple[int, ...]) -> Any:
+        a = r[name]
+        if a is None:
+            a = _empty_like(origin.framework, x).reshape(empty_shape)
+        return a
+
+    return RawResult(
+        x,
+        arr("simplices", (0, 4)),
+        arr("neighbors", (0, 4)),
+        arr("failed_vertices", (0,)),
+        arr("representative", (0,)),
+        r["stats"],
+        origin,
+        on_device=True,
+    )
 
 
 def delaunay(points: Any, algorithm: str, device: str) -> RawResult:

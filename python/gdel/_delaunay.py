@@ -32,9 +32,11 @@ class Delaunay:
         float32 or float64 coordinates (integers are accepted when exactly representable),
         any strides. numpy arrays, nested sequences, and DLPack producers (torch, cupy,
         jax, ...) are accepted. Host arrays are read in place when C-contiguous float64
-        and converted to contiguous float64 once otherwise. CUDA arrays are NOT zero-copy
-        yet: the points are copied to the host, and results are copied back to the same
-        device as arrays of the same framework (torch / cupy / jax).
+        and converted to contiguous float64 once otherwise. torch and cupy CUDA arrays
+        are triangulated on their GPU without a host copy (float32 is converted on the
+        device) and the results are int32 arrays of the same framework on the same
+        device; jax CUDA arrays (and ``device="cpu"``, another ``cuda:N``, or gstar4d)
+        go through the host, with results copied back to the input's device.
     algorithm : "auto" | "gdel3d" | "gflip3d" | ...
         "auto" is "gdel3d": the exact Delaunay triangulation (every facet locally
         Delaunay, no zero-volume simplex, cospherical ties broken by a symbolic
@@ -55,6 +57,12 @@ class Delaunay:
     points : ndarray (n, 3) float64
         The input as C-contiguous float64 (the input itself when it already was). For
         CUDA input: the array that was passed in.
+
+    For a CUDA input, ``simplices``, ``neighbors``, ``representative`` and
+    ``failed_vertices`` are the device arrays the C++ library returned; the derived
+    attributes (``convex_hull``, ``vertex_to_simplex``, ``vertex_neighbor_vertices``,
+    ``transform``, ``coplanar``) and ``find_simplex`` are computed on the host from a
+    copy made on first use, and returned on the input's device.
     simplices : ndarray (m, 4) int32
         Vertex ids of each tetrahedron, positively oriented: ``orient3d(p0,p1,p2,p3) =
         det[p1-p0, p2-p0, p3-p0] > 0``. Duplicate points (exactly equal) appear once,
@@ -102,13 +110,9 @@ class Delaunay:
         check: bool = False,
     ) -> None:
         raw = _arrays.delaunay(points, algorithm, device)
+        self._raw = raw
         self._origin = raw.origin
         self._input = points
-        self._points = raw.points
-        self._simplices = raw.simplices
-        self._neighbors = raw.neighbors
-        self._failed_vertices = raw.failed_vertices
-        self._representative = raw.representative
         self.stats: dict[str, Any] = raw.stats
         self.check_report: Optional[_check.CheckReport] = None
         if check:
@@ -124,33 +128,60 @@ class Delaunay:
 
     @property
     def npoints(self) -> int:
-        return int(self._points.shape[0])
+        return int(self._raw.points.shape[0])
 
     @property
     def nsimplex(self) -> int:
-        return int(self._simplices.shape[0])
+        return int(self._raw.simplices.shape[0])
+
+    # -- host views: numpy arrays the derived attributes and queries compute with. On the
+    # -- device path (torch/cupy CUDA input) each is a device -> host copy made on first
+    # -- use only; the triangulation itself never needs them.
+
+    def _host(self, name: str) -> np.ndarray:
+        return self._origin.to_numpy(getattr(self._raw, name)) if self._raw.on_device else getattr(self._raw, name)
+
+    @cached_property
+    def _points(self) -> np.ndarray:
+        return np.ascontiguousarray(self._host("points"), dtype=np.float64)
+
+    @cached_property
+    def _simplices(self) -> np.ndarray:
+        return self._host("simplices")
+
+    @cached_property
+    def _neighbors(self) -> np.ndarray:
+        return self._host("neighbors")
+
+    @cached_property
+    def _representative(self) -> np.ndarray:
+        return self._host("representative")
 
     # -- arrays (host numpy for host input; the input's framework and device else) --
 
+    def _result(self, name: str) -> Any:
+        a = getattr(self._raw, name)
+        return a if self._raw.on_device else self._origin.give(a)
+
     @cached_property
     def points(self) -> Any:
-        return self._input if self._origin.on_device else self._points
+        return self._input if self._origin.on_device else self._raw.points
 
     @cached_property
     def simplices(self) -> Any:
-        return self._origin.give(self._simplices)
+        return self._result("simplices")
 
     @cached_property
     def neighbors(self) -> Any:
-        return self._origin.give(self._neighbors)
+        return self._result("neighbors")
 
     @cached_property
     def failed_vertices(self) -> Any:
-        return self._origin.give(self._failed_vertices)
+        return self._result("failed_vertices")
 
     @cached_property
     def representative(self) -> Any:
-        return self._origin.give(self._representative)
+        return self._result("representative")
 
     @cached_property
     def _vertex_to_simplex(self) -> np.ndarray:

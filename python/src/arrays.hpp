@@ -17,6 +17,8 @@
 #include <utility>
 #include <vector>
 
+#include "gdel/delaunay.hpp"
+
 namespace gdel_py {
 
 namespace nb = nanobind;
@@ -193,6 +195,32 @@ nb::object to_numpy(std::vector<T>&& v, std::initializer_list<std::size_t> shape
   nb::capsule owner(holder.get(), [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
   holder.release();  // the capsule owns it now
   return nb::cast(nb::ndarray<nb::numpy, T>(data, shape, owner));
+}
+
+// An int32 array of `framework` ("torch" or "cupy") on CUDA device a.device() that takes
+// over a's memory (no copy): a capsule owns the DeviceArray, whose destructor frees it
+// with cudaFree when the framework drops its last reference. None for an empty array
+// (the Python layer makes empty arrays itself: DLPack consumers differ on null data).
+inline nb::object to_device_framework(gdel::DeviceArray<std::int32_t>&& a, std::size_t rows, std::size_t cols,
+                                      const std::string& framework) {
+  if (a.size() == 0) return nb::none();
+  const int device = a.device();
+  auto holder = std::make_unique<gdel::DeviceArray<std::int32_t>>(std::move(a));
+  std::int32_t* data = holder->data();
+  nb::capsule owner(holder.get(), [](void* p) noexcept { delete static_cast<gdel::DeviceArray<std::int32_t>*>(p); });
+  holder.release();  // the capsule owns it now
+  const bool two_d = cols != 0;
+  const std::size_t shape2[2] = {rows, cols};
+  const std::size_t shape1[1] = {rows};
+  const std::size_t ndim = two_d ? 2 : 1;
+  const std::size_t* shape = two_d ? shape2 : shape1;
+  if (framework == "torch")
+    return nb::cast(nb::ndarray<nb::pytorch, std::int32_t, nb::device::cuda>(
+        data, ndim, shape, owner, nullptr, nb::dtype<std::int32_t>(), nb::device::cuda::value, device));
+  if (framework == "cupy")
+    return nb::cast(nb::ndarray<nb::cupy, std::int32_t, nb::device::cuda>(
+        data, ndim, shape, owner, nullptr, nb::dtype<std::int32_t>(), nb::device::cuda::value, device));
+  throw std::invalid_argument("device results: unsupported framework '" + framework + "' (torch or cupy)");
 }
 
 }  // namespace gdel_py

@@ -2,9 +2,9 @@
 // nothing else. Arrays come in as host ndarrays (numpy or any DLPack producer),
 // are read in place when they already are contiguous float64 / int32 and converted
 // once otherwise; results leave as numpy arrays owning the API's vectors. The GIL
-// is released while reading inputs and computing. Device (CUDA) arrays are moved
-// through the host by the Python layer (gdel/_arrays.py) until the C++ API grows a
-// device-pointer entry point.
+// is released while reading inputs and computing. CUDA arrays go to
+// gdel::delaunay_device (delaunay_device below): read in place on their GPU, results
+// returned as torch/cupy arrays owning gdel's device memory.
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/optional.h>
@@ -199,6 +199,65 @@ nb::dict py_delaunay(const AnyArray& points, const std::string& algorithm, const
   return d;
 }
 
+// CUDA (or managed) arrays, read where they are by gdel::delaunay_device; results are
+// `framework` arrays on the same device that own gdel's device memory. The Python layer
+// (gdel/_arrays.py) makes the input C-contiguous float32/float64 with the framework's own
+// device operations and passes the framework's current stream.
+nb::dict py_delaunay_device(const AnyArray& points, const std::string& framework, const std::string& algorithm,
+                            std::uintptr_t stream) {
+  const int dt = points.device_type();
+  if (dt != nb::device::cuda::value && dt != nb::device::cuda_managed::value)
+    throw nb::type_error(("points: delaunay_device takes CUDA arrays; this one is on DLPack device type " +
+                          std::to_string(dt))
+                             .c_str());
+  require_points_shape(points, "points");
+  const bool f64 = points.dtype() == nb::dtype<double>();
+  if (!f64 && points.dtype() != nb::dtype<float>())
+    throw nb::value_error(("points: delaunay_device takes float32 or float64, got dtype " +
+                           gdel_py::dtype_name(points.dtype()))
+                              .c_str());
+  if (!gdel_py::c_contiguous(points))
+    throw nb::value_error("points: delaunay_device takes C-contiguous arrays (make it contiguous on the device first)");
+  if (framework != "torch" && framework != "cupy")
+    throw nb::value_error(("delaunay_device: framework '" + framework + "' (torch or cupy)").c_str());
+  gdel::Options opt;
+  opt.algorithm = parse_name<gdel::Algorithm>(algorithm, "algorithm");
+  opt.backend = gdel::Backend::Cuda;
+  gdel::DevicePoints dp;
+  dp.data = static_cast<const std::uint8_t*>(points.data_handle()) + points.byte_offset();
+  dp.n = static_cast<std::int64_t>(points.shape(0));
+  dp.float32 = !f64;
+  dp.device = points.device_id();
+  dp.stream = reinterpret_cast<void*>(stream);
+  opt.device = dp.device;
+  gdel::DeviceTriangulation t;
+  {
+    nb::gil_scoped_release unlocked;
+    t = gdel::delaunay_device(dp, opt);
+  }
+  const std::size_t n = points.shape(0);
+  const std::size_t m = static_cast<std::size_t>(t.num_tets());
+  const std::size_t nf = static_cast<std::size_t>(t.failed_vertices.size());
+  nb::dict d;
+  d["simplices"] = gdel_py::to_device_framework(std::move(t.tets), m, 4, framework);
+  d["neighbors"] = gdel_py::to_device_framework(std::move(t.neighbors), m, 4, framework);
+  d["failed_vertices"] = gdel_py::to_device_framework(std::move(t.failed_vertices), nf, 0, framework);
+  d["representative"] = gdel_py::to_device_framework(std::move(t.representative), n, 0, framework);
+  d["nsimplex"] = m;
+  nb::dict st = stats_dict(t.stats);
+  // What the C++ side received and read: the proof that the points were not copied
+  // (points_read == the input's data pointer unless converted says otherwise).
+  nb::dict din;
+  din["device"] = dp.device;
+  din["received"] = reinterpret_cast<std::uintptr_t>(dp.data);
+  din["points_read"] = reinterpret_cast<std::uintptr_t>(t.points_read);
+  din["converted"] = t.converted_input;
+  din["stream"] = stream;
+  st["device_input"] = din;
+  d["stats"] = st;
+  return d;
+}
+
 nb::dict py_verify(const AnyArray& points, const AnyArray& tets, std::optional<AnyArray> weights,
                    const std::string& backend) {
   require_host(points, "points");
@@ -264,6 +323,16 @@ NB_MODULE(_core, m) {
         "Returns a dict: simplices (m, 4) int32, neighbors (m, 4) int32, failed_vertices (k,) int32,\n"
         "representative (n,) int32, stats (dict), points (the float64 copy when the input was converted,\n"
         "else None). The GIL is released while computing.");
+  m.def("delaunay_device", &py_delaunay_device, "points"_a, "framework"_a, "algorithm"_a = "auto", "stream"_a = 0,
+        nb::sig("def delaunay_device(points: typing.Any, framework: str, algorithm: str = 'auto', stream: int = 0) "
+                "-> dict[str, typing.Any]"),
+        "Triangulates C-contiguous float32/float64 points of shape (n, 3) in CUDA memory on their own\n"
+        "device (gdel::delaunay_device: no host copy of the points or the results). `framework`\n"
+        "('torch' or 'cupy') is the kind of the result arrays; `stream` the cudaStream_t the points\n"
+        "were written on (0: the legacy default stream), which gdel waits for.\n\n"
+        "Returns a dict: simplices, neighbors (m, 4), failed_vertices (k,), representative (n,) as int32\n"
+        "device arrays owning gdel's memory (None where empty), nsimplex, stats (with\n"
+        "stats['device_input']: received / points_read pointers, converted). The GIL is released.");
   m.def("verify", &py_verify, "points"_a, "simplices"_a, "weights"_a = nb::none(), "backend"_a = "auto",
         nb::sig("def verify(points: typing.Any, simplices: typing.Any, weights: typing.Any | None = None, "
                 "backend: str = 'auto') -> dict[str, typing.Any]"),

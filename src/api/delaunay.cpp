@@ -135,4 +135,28 @@ Triangulation delaunay(std::span<const double> points, const Options& options) {
   return t;
 }
 
+DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& options) {
+  if (points.n < 0 || (points.n > 0 && points.data == nullptr))
+    throw InvalidInput("delaunay_device: no device pointer for " + std::to_string(points.n) + " points");
+  if (points.n >= (std::int64_t(1) << 31) - 1)
+    throw InvalidInput("delaunay_device: " + std::to_string(points.n) + " points; vertex ids are int32 (at most 2^31 - 2 points)");
+  if (options.backend == Backend::Cpu)
+    throw InvalidInput("delaunay_device: points in device memory need the CUDA backend (Backend::Cpu asked for); "
+                       "copy them to the host and call gdel::delaunay");
+  if (options.algorithm == Algorithm::gstar4d || options.verify || options.canonical_order)
+    throw InvalidInput("delaunay_device: gstar4d (its exact certificate), Options::verify and Options::canonical_order "
+                       "run on host arrays; use gdel::delaunay for them");
+  if (points.n == 0) throw DegenerateInput("need at least 4 distinct points, got 0");
+#if defined(GDEL_HAVE_CUDA)
+  resolve_backend(Backend::Cuda);  // BackendUnavailable without a visible device
+  return cuda_backend::delaunay_device(points, options);
+#else
+  throw BackendUnavailable("delaunay_device: this build of gdel has no CUDA support (rebuild with the cuda preset)");
+#endif
+}
+
+#if !defined(GDEL_HAVE_CUDA)
+void device_free(void*, int) noexcept {}  // nothing is ever allocated without CUDA
+#endif
+
 }  // namespace gdel

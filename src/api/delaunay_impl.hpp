@@ -19,8 +19,40 @@ namespace gdel::api {
 using par::Buffer;
 using par::Context;
 
-template <class B>
-Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const Options& opt) {
+// Where delaunay_into() reads the points and leaves the results. HostOutput (what
+// gdel::delaunay uses): the points are host memory, uploaded once; results are copied to
+// the Triangulation's vectors. The device entry point (delaunay_cuda.cu) passes one that
+// reads device memory in place and keeps the results on the device.
+struct HostOutput {
+  template <class B>
+  const double* input(Buffer<double, B>& X, std::span<const double> points) {
+    X.assign(points.data(), points.size());
+    return X.data();
+  }
+  template <class B>
+  void representative(Context<B>&, const Buffer<std::int64_t, B>& rep, std::int64_t n, Triangulation& out) {
+    auto r = rep.to_host();
+    out.representative.resize(static_cast<std::size_t>(n));
+    for (std::int64_t i = 0; i < n; ++i) out.representative[i] = static_cast<std::int32_t>(r[i]);
+  }
+  template <class B>
+  void failed_vertices(Context<B>&, const Buffer<std::int64_t, B>& fl, std::size_t nfv,
+                       const Buffer<std::int64_t, B>& sid, Triangulation& out) {
+    auto flh = fl.to_host();
+    auto sidh = sid.to_host();
+    out.failed_vertices.reserve(nfv);
+    for (std::size_t k = 0; k < nfv; ++k) out.failed_vertices.push_back(static_cast<std::int32_t>(sidh[flh[k]]));
+    std::sort(out.failed_vertices.begin(), out.failed_vertices.end());
+  }
+  template <class B>
+  void tets(Buffer<std::int32_t, B>& tv, Buffer<std::int32_t, B>& tn, Triangulation& out) {
+    out.tets = tv.to_host();
+    out.neighbors = tn.to_host();
+  }
+};
+
+template <class B, class Out>
+Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, const Options& opt, Out& sink) {
   using I64 = std::int64_t;
   auto t_start = std::chrono::steady_clock::now();
   auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
@@ -35,17 +67,12 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
   // --- prepare: upload, duplicates, spatial order ------------------------------------
   auto t0 = std::chrono::steady_clock::now();
   Buffer<double, B> X(ctx);
-  X.assign(points.data(), points.size());
-  const double* xp = X.data();
+  const double* xp = sink.input(X, points);
   Buffer<I64, B> rep(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));
   I64* rp = rep.data();
   const I64 m = sort::duplicate_representatives(ctx, xp, n, rp);
   st.distinct_points = m;
-  out.representative.resize(static_cast<std::size_t>(n));
-  {
-    auto r = rep.to_host();
-    for (I64 i = 0; i < n; ++i) out.representative[i] = static_cast<std::int32_t>(r[i]);
-  }
+  sink.representative(ctx, rep, n, out);
   if (m < 4) throw DegenerateInput("need at least 4 distinct points, got " + std::to_string(m));
   Buffer<I64, B> ids(ctx, static_cast<std::size_t>(m));  // distinct points (input ids, ascending)
   I64* idp = ids.data();
@@ -93,8 +120,7 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
     const I64* sp = sid.data();
     par::parallel_for(ctx, static_cast<I64>(tv.size()),
                       [=] GDEL_HD(I64 i) { tvp[i] = static_cast<vid_t>(sp[tvp[i]]); });
-    out.tets = tv.to_host();
-    out.neighbors = tn.to_host();
+    sink.tets(tv, tn, out);
     st.stages.push_back({"output", since(t0)});
     st.peak_bytes = static_cast<I64>(ctx.memory().peak());
     st.seconds = since(t_start);
@@ -138,8 +164,7 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
     const I64* sp = sid.data();
     par::parallel_for(ctx, static_cast<I64>(tv.size()),
                       [=] GDEL_HD(I64 i) { tvp[i] = static_cast<vid_t>(sp[tvp[i]]); });
-    out.tets = tv.to_host();
-    out.neighbors = tn.to_host();
+    sink.tets(tv, tn, out);
     st.stages.push_back({"output", since(t1)});
     st.peak_bytes = static_cast<I64>(ctx.memory().peak());
     st.seconds = since(t_start);
@@ -154,11 +179,7 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
     std::size_t nfv = par::select_indices(ctx, static_cast<std::size_t>(m), fl.data(),
                                           [=] GDEL_HD(I64 v) { return fvp[v] != 0; });
     st.failed_vertices = static_cast<I64>(nfv);
-    auto flh = fl.to_host();
-    auto sidh = sid.to_host();
-    out.failed_vertices.reserve(nfv);
-    for (std::size_t k = 0; k < nfv; ++k) out.failed_vertices.push_back(static_cast<std::int32_t>(sidh[flh[k]]));
-    std::sort(out.failed_vertices.begin(), out.failed_vertices.end());
+    sink.failed_vertices(ctx, fl, nfv, sid, out);
   }
   // finite tets, input ids, neighbours (-1 across the hull)
   Buffer<tid_t, B> fin(ctx, static_cast<std::size_t>(nt + 1));
@@ -182,12 +203,23 @@ Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const
   });
   tv.resize(static_cast<std::size_t>(4 * nfin));
   tn.resize(static_cast<std::size_t>(4 * nfin));
-  out.tets = tv.to_host();
-  out.neighbors = tn.to_host();
+  sink.tets(tv, tn, out);
   st.peak_bytes = static_cast<I64>(ctx.memory().peak());
   st.stages.push_back({"output", since(t0)});
   st.seconds = since(t_start);
   return out;
 }
 
+template <class B>
+Triangulation delaunay_on(Context<B>& ctx, std::span<const double> points, const Options& opt) {
+  HostOutput sink;
+  return delaunay_into(ctx, points, opt, sink);
+}
+
 }  // namespace gdel::api
+
+namespace gdel::cuda_backend {
+// gdel::delaunay_device's CUDA part (delaunay_cuda.cu); the checks of the options are in
+// delaunay.cpp.
+DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& options);
+}  // namespace gdel::cuda_backend
