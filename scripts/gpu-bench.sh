@@ -38,5 +38,19 @@ case "${1:-all}" in
     run --dist gaussian,thin_shell,grid,sphere,ball --n 1000000 --methods gdel3d-cuda,cgal,cgal-par --repeat 1 \
       --json "$out/gdel3d-dists.json"
     ;;
+  gstar4d)  # gStar4D against gDel3D and CGAL (bench/RESULTS.md 2026-11-23; scripts/gpu-run.sh
+            # splits the same runs over calls that fit the device limit)
+    run --dist uniform,gaussian,thin_shell,ball --n 100000,1000000 --methods gstar4d-cuda,gdel3d-cuda \
+      --repeat 3 --json "$out/gstar4d-dists.json"
+    run --dist uniform,gaussian,thin_shell,ball,grid --n 100000,1000000 --methods cgal,cgal-par --repeat 1 \
+      --json "$out/gstar4d-dists-cgal.json"
+    # degenerate input: gstar4d takes 7 s on grid 10^5, > 100 s on grid 10^6 and 3.8 s on 300
+    # cospherical points (RESULTS.md): small sizes only
+    run --dist grid --n 100000 --methods gstar4d-cuda,gdel3d-cuda --repeat 1 --json "$out/gstar4d-grid.json"
+    run --dist sphere --n 300 --methods gstar4d-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1 \
+      --json "$out/gstar4d-sphere.json"
+    run --dist uniform,gaussian --n 10000000 --methods gstar4d-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1 \
+      --json "$out/gstar4d-1e7.json"
+    ;;
   *) run "$@" ;;
 esac

@@ -1,0 +1,159 @@
+#!/usr/bin/env bash
+# One device call: build only what is needed (or use carried binaries), run steps, log all.
+#
+#   bash scripts/gpu-run.sh PLAN            (PLAN: a case below, or "cmd" + a command)
+#
+# Binaries: if build/gs-bin/ exists (built HERE with CGAL, stripped, plus the shared libraries
+# the device lacks; see "Carried binaries" below) they are used as they are; otherwise the
+# targets the plan needs are configured and built in build/cuda like scripts/gpu-check.sh
+# does (-DGDEL_DEPS_DIR=$PWD/.deps: carry [".deps"]) and the build time is printed.
+# GDEL_SRC=DIR builds the sources in DIR instead of the working tree (a clean snapshot,
+# `git archive HEAD | tar -x -C build/gs-src`, carried: others' unfinished edits stay out).
+# Every step runs under its own timeout (all of them within GDEL_CALL_BUDGET seconds) and
+# logs to $OUT/log.txt (bench/out/ without OUT); a summary line per step, failures and
+# benchmark table rows go to stdout and $OUT/summary.txt; gdel-bench JSON merged into
+# $OUT/bench.json
+# (the device tool returns at most 8 files).
+#
+# Carried binaries (here, no device time):
+#   cmake -S . -B build/gs-cuda -G Ninja -DGDEL_CUDA=ON -DCMAKE_BUILD_TYPE=Release \
+#     -DCMAKE_CUDA_ARCHITECTURES=90 -DGDEL_DEPS_DIR=$PWD/.deps \
+#     -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST
+#   cmake --build build/gs-cuda --target gdel_bench gpu_gstar4d gpu_star_stage gpu_pba gpu_gdel3d
+#   mkdir -p build/gs-bin && cp build/gs-cuda/gdel-bench build/gs-cuda/tests/gpu_star_stage build/gs-bin/
+#   strip build/gs-bin/gdel-bench   (the fatbins dominate: the carry limit is 64 MiB in all)
+#   cp /lib/x86_64-linux-gnu/{libgmp.so.10,libtbb.so.12,libtbbmalloc.so.2} build/gs-bin/
+#   device: carry ["build/gs-bin", ".deps/models"], command "bash scripts/gpu-run.sh bench1"
+# Recorded runs: bench/RESULTS.md, 2026-11-23.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+out="${OUT:-bench/out}"
+mkdir -p "$out"
+deadline=$(( $(date +%s) + ${GDEL_CALL_BUDGET:-570} ))  # the device kills a call at 600 s
+plan="${1:-tests}"
+shift || true
+echo "== device: $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader 2>/dev/null)" \
+  | tee "$out/summary.txt"
+echo "== host threads: $(nproc)" | tee -a "$out/summary.txt"
+
+if [ -d build/gs-bin ]; then
+  bin=build/gs-bin
+  tbin=build/gs-bin
+  export LD_LIBRARY_PATH="$PWD/build/gs-bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+else
+  targets="${GDEL_TARGETS:-gdel_bench gpu_gstar4d gpu_star_stage gpu_pba gpu_gdel3d}"
+  t0=$(date +%s)
+  cmake -S "${GDEL_SRC:-.}" -B build/cuda -G Ninja -DGDEL_CUDA=ON -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_CUDA_ARCHITECTURES="${GDEL_CUDA_ARCH:-90}" -DGDEL_DEPS_DIR="$PWD/.deps" \
+    -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST >"$out/build.log" 2>&1 \
+    || { tail -40 "$out/build.log"; exit 1; }
+  # shellcheck disable=SC2086
+  if ! cmake --build build/cuda -j "$(nproc)" --target $targets >>"$out/build.log" 2>&1; then
+    grep -E -B2 -A8 'error|FAILED' "$out/build.log" | head -120
+    exit 1
+  fi
+  echo "== build ($targets): $(( $(date +%s) - t0 )) s" | tee -a "$out/summary.txt"
+  bin=build/cuda
+  tbin=build/cuda/tests
+fi
+
+# step NAME TIMEOUT_S COMMAND...: run with a timeout (cut to what is left of the call's
+# budget, GDEL_CALL_BUDGET seconds from the script's start, build included, default 570),
+# log, one summary line
+step() {
+  local name=$1 limit=$2
+  shift 2
+  local left=$(( deadline - $(date +%s) ))
+  [ "$left" -lt "$limit" ] && limit=$left
+  if [ "$limit" -le 5 ]; then
+    echo "== step $name: skipped (call budget spent)" | tee -a "$out/summary.txt"
+    return
+  fi
+  local t0 rc dt note=""
+  t0=$(date +%s.%N)
+  local log=/tmp/gpu-run-$name.log
+  echo "== $name (limit ${limit}s): $*" >"$log"
+  timeout --kill-after=5 "$limit" "$@" >>"$log" 2>&1
+  rc=$?
+  cat "$log" >>"$out/log.txt"
+  dt=$(python3 -c "import sys; print(f'{float(sys.argv[2])-float(sys.argv[1]):.1f}')" "$t0" "$(date +%s.%N)")
+  [ "$rc" = 124 ] && note=" TIMEOUT"
+  if grep -q '^\[==========\]' "$log"; then
+    note="$note | $(grep -E '^\[  PASSED  \]|^\[  FAILED  \]' "$log" | tr '\n' ' ')"
+  fi
+  echo "== step $name: rc=$rc ${dt}s$note" | tee -a "$out/summary.txt"
+  grep -E '^\[  FAILED  \]|Failure$|^Expected|^Which is|^  Actual' "$log" | head -20
+  grep -E '^[a-z_]+ +[0-9]+ (gstar4d|gdel3d|cgal)' "$log" | cut -c1-200
+}
+gb="$bin/gdel-bench"
+jdir=/tmp/gpu-run-json
+rm -rf "$jdir" && mkdir -p "$jdir"
+# gdel-bench with its JSON merged into $OUT/bench.json after every run: bench NAME LIMIT ARGS
+bench() {
+  local name=$1 limit=$2
+  shift 2
+  step "$name" "$limit" "$gb" "$@" --json "$jdir/$name.json"
+  python3 - "$jdir" "$out/bench.json" <<'PY'
+import json, pathlib, sys
+rows = []
+for f in sorted(pathlib.Path(sys.argv[1]).glob("*.json"), key=lambda p: p.stat().st_mtime):
+    try:
+        for r in json.loads(f.read_text()):
+            r["step"] = f.stem
+            rows.append(r)
+    except Exception:
+        pass
+pathlib.Path(sys.argv[2]).write_text(json.dumps(rows, indent=1))
+PY
+}
+
+case "$plan" in
+  tests)  # the GPU tests of gstar4d and its stages, and the gdel3d regression tests
+    step star_stage 120 "$tbin/gpu_star_stage"
+    step gstar4d_million 150 "$tbin/gpu_gstar4d" --gtest_filter='*MillionPoints*'
+    step pba 120 "$tbin/gpu_pba"
+    step gdel3d 150 "$tbin/gpu_gdel3d"
+    step gstar4d_generators 400 "$tbin/gpu_gstar4d" --gtest_filter='*AllGenerators*'
+    ;;
+  bench1)  # all generators at 10^5 and 10^6, sphere small, the scanned models; gpu_star_stage under cuda-gdb
+    if [ -x "$tbin/gpu_star_stage" ]; then
+      step star_stage_gdb 60 cuda-gdb -batch -ex run -ex bt -ex 'info threads' --args "$tbin/gpu_star_stage"
+    fi
+    d=uniform,gaussian,thin_shell,ball
+    bench gpu_dists 100 --dist $d --n 100000,1000000 --methods gstar4d-cuda,gdel3d-cuda --repeat 3
+    bench gpu_grid 120 --dist grid --n 100000,1000000 --methods gdel3d-cuda,gstar4d-cuda --repeat 1
+    bench cgal_dists 110 --dist $d,grid --n 100000,1000000 --methods cgal,cgal-par --repeat 1
+    bench sphere 80 --dist sphere --n 2000,10000 --methods gdel3d-cuda,cgal,cgal-par,gstar4d-cuda --repeat 1
+    m=.deps/models
+    bench models 60 --dist $m/bunny00.off,$m/armadillo.off,$m/ChineseDragon-10kv.off,$m/blade.off,$m/building.ply,$m/b9_training.ply \
+      --methods gstar4d-cuda,gdel3d-cuda,cgal,cgal-par --repeat 3
+    ;;
+  bench7)  # 10^7 (gstar4d at 10^7 is plan star7), plus the leftovers of bench1
+    bench sphere_small 40 --dist sphere --n 300,1000 --methods gstar4d-cuda,gdel3d-cuda --repeat 1
+    m=.deps/models
+    bench models2 40 --dist $m/building.ply,$m/b9_training.ply --methods cgal,cgal-par,gdel3d-cuda,gstar4d-cuda --repeat 1
+    if [ -x "$tbin/gpu_star_stage" ]; then  # caller of the null-pointer call (bt cannot unwind from pc 0)
+      step star_stage_gdb 40 cuda-gdb -batch -ex run -ex 'x/8a $sp' -ex 'info registers rip rsp' --args "$tbin/gpu_star_stage"
+    fi
+    bench e7_gdel3d 60 --dist uniform,gaussian --n 10000000 --methods gdel3d-cuda --repeat 1
+    bench e7_cgal 190 --dist uniform,gaussian --n 10000000 --methods cgal-par,cgal --repeat 1
+    ;;
+  star7)  # gstar4d at 3*10^6 and 10^7 (a first try took the device machine down with it), memory logged
+    nvidia-smi --query-gpu=memory.used --format=csv,noheader -lms 500 >"$out/gpu_mem.txt" 2>&1 &
+    bench s3_gpu 60 --dist uniform --n 3000000 --methods gstar4d-cuda --repeat 1
+    bench e7_gstar4d 150 --dist uniform,gaussian --n 10000000 --methods gstar4d-cuda --repeat 1
+    kill %1 2>/dev/null
+    ;;
+  smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
+    bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
+    ;;
+  cmd)
+    step cmd "${STEP_LIMIT:-540}" "$@"
+    ;;
+  *)
+    echo "unknown plan $plan" >&2
+    exit 1
+    ;;
+esac
+# shellcheck disable=SC2034
+: "$bin"
