@@ -1,4 +1,5 @@
 #include "common/hostile_cases.hpp"
+#include "gdel/regular.hpp"
 TEST(HostileGpu, PeersReportedFailures) { gdel::test::hostile_cases(gdel::Backend::Cuda); }
 // With canonical_order both backends give bitwise identical arrays (issue 8: determinism).
 TEST(HostileGpu, SameArraysAsTheCpuBackend) {
