@@ -50,7 +50,8 @@ inline std::vector<NamedSet> hostile_sets() {
       s.insert(s.end(), {v[0] / l, v[1] / l, v[2] / l});
     }
     sets.push_back({"1000 points on the unit sphere (gDel3D #14)", s});
-    sets.push_back({"exact integer points on a sphere", gen::generate(gen::Distribution::Sphere, 1000, 14)});
+    // (500: every insphere test a tie, and gStar4D's hull stars take all of them)
+    sets.push_back({"exact integer points on a sphere", gen::generate(gen::Distribution::Sphere, 500, 14)});
   }
   sets.push_back({"octahedral 9 points", {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 0.5,
                                          0, 0, -0.5}});
