@@ -16,3 +16,5 @@ if command -v nvcc >/dev/null 2>&1 || [ -x /usr/local/cuda/bin/nvcc ]; then
   cmake --build --preset cuda -j "$jobs"
 fi
 bash scripts/test-python.sh
+echo "== CPU backend under AddressSanitizer + UBSan"
+bash scripts/test-asan.sh

@@ -152,8 +152,12 @@ inline void greg3d_generator_cases(Backend b, std::size_t n) {
       auto w = random_weights(n, extent, scale, 99);
       RegularTriangulation r = regular(pts, w, o);
       expect_exact_regular(pts, w, r, b);
-      if (scale == 0.0) EXPECT_TRUE(r.redundant.empty());
-      if (scale == 30.0) EXPECT_GT(r.redundant.size(), n / 2);  // most hidden
+      if (scale == 0.0) {
+        EXPECT_TRUE(r.redundant.empty());
+      }
+      if (scale == 30.0) {
+        EXPECT_GT(r.redundant.size(), n / 2);  // most hidden
+      }
       EXPECT_GE(r.redundant.size(), last);
       last = r.redundant.size();
       RegularTriangulation r2 = regular(pts, w, o);  // deterministic
