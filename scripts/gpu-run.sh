@@ -36,10 +36,10 @@ echo "== device: $(nvidia-smi --query-gpu=name,memory.total,driver_version --for
   | tee "$out/summary.txt"
 echo "== host threads: $(nproc)" | tee -a "$out/summary.txt"
 
-if [ -d build/gs-bin ]; then
-  bin=build/gs-bin
-  tbin=build/gs-bin
-  export LD_LIBRARY_PATH="$PWD/build/gs-bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+if [ -n "${GDEL_BIN_DIR:-}" ] || [ -d build/gs-bin ]; then  # carried binaries (GDEL_BIN_DIR names another folder)
+  bin=${GDEL_BIN_DIR:-build/gs-bin}
+  tbin=$bin
+  export LD_LIBRARY_PATH="$PWD/$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 else
   targets="${GDEL_TARGETS:-gdel_bench gpu_gstar4d gpu_star_stage gpu_pba gpu_gdel3d}"
   t0=$(date +%s)
@@ -83,7 +83,7 @@ step() {
   fi
   echo "== step $name: rc=$rc ${dt}s$note" | tee -a "$out/summary.txt"
   grep -E '^\[  FAILED  \]|Failure$|^Expected|^Which is|^  Actual' "$log" | head -20
-  grep -E '^[a-z_]+ +[0-9]+ (gstar4d|gdel3d|cgal)' "$log" | cut -c1-200
+  grep -E '^[a-z_]+ +[0-9]+ (gstar4d|gdel3d|greg3d|cgal)' "$log" | cut -c1-200
 }
 gb="$bin/gdel-bench"
 jdir=/tmp/gpu-run-json
@@ -143,6 +143,13 @@ case "$plan" in
     bench s3_gpu 60 --dist uniform --n 3000000 --methods gstar4d-cuda --repeat 1
     bench e7_gstar4d 150 --dist uniform,gaussian --n 10000000 --methods gstar4d-cuda --repeat 1
     kill %1 2>/dev/null
+    ;;
+  greg3d)  # gReg3D's GPU tests, the hostile-input regressions, gReg3D against CGAL Regular_triangulation_3
+    step greg3d_tests 200 "$tbin/gpu_greg3d"
+    step hostile 170 "$tbin/gpu_hostile"
+    bench reg_1e5_1e6 120 --dist uniform,gaussian,ball --n 100000,1000000 \
+      --methods greg3d-cuda,cgal-regular,cgal-regular-par --repeat 1
+    bench reg_1e7 150 --dist uniform --n 10000000 --methods greg3d-cuda,cgal-regular-par,cgal-regular --repeat 1
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
