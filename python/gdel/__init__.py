@@ -22,6 +22,7 @@ from . import _core
 from ._check import CheckReport, check
 from ._core import BackendUnavailableError, DegenerateInputError, GdelError
 from ._delaunay import Delaunay, delaunay
+from ._regular import Regular, regular
 
 __version__: str = _core.version()
 
@@ -53,8 +54,10 @@ __all__ = [
     "DegenerateInputError",
     "Delaunay",
     "GdelError",
+    "Regular",
     "built_with_cuda",
     "check",
     "cuda_available",
     "delaunay",
+    "regular",
 ]

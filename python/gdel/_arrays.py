@@ -353,3 +353,39 @@ def delaunay(points: Any, algorithm: str, device: str) -> RawResult:
     if origin.on_device:
         return _delaunay_on_device(points, algorithm, backend, ordinal, origin)
     return _delaunay_on_host(host_array(points, "points"), algorithm, backend, ordinal, origin)
+
+
+@dataclass
+class RawRegular(RawResult):
+    """RawResult of gdel::regular (always through the host: see docs/python.md)."""
+
+    weights: Any = None  # (n,) float64 on the host
+    redundant: Any = None
+    certificates: Any = None
+
+
+def regular(points: Any, weights: Any, device: str, certificates: bool) -> RawRegular:
+    """gdel::regular on host copies of the inputs (CUDA inputs are copied to the host and
+    the results given back on their device when read)."""
+    origin = origin_of(points, "points")
+    backend, ordinal = resolve_device(device, origin)
+    host = to_host(points, origin, "points")
+    worigin = origin_of(weights, "weights")
+    whost = to_host(weights, worigin, "weights")
+    r = _core.regular(host, whost, "auto", backend, ordinal, certificates)
+    pts = r["points"] if r["points"] is not None else as_numpy(host)
+    w = r["weights"] if r["weights"] is not None else as_numpy(whost)
+    r["stats"]["device_input"] = None
+    empty = np.zeros(0, dtype=np.int32)
+    return RawRegular(
+        pts,
+        r["simplices"],
+        r["neighbors"],
+        empty,
+        r["representative"],
+        r["stats"],
+        origin,
+        weights=w,
+        redundant=r["redundant"],
+        certificates=r["certificates"],
+    )

@@ -18,6 +18,7 @@
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "gdel/options.hpp"
+#include "gdel/regular.hpp"
 #include "gdel/verify.hpp"
 #include "gdel/version.hpp"
 
@@ -132,6 +133,11 @@ nb::dict stats_dict(const gdel::Stats& s) {
   d["splay_rounds"] = s.splay_rounds;
   d["splay_insertions"] = s.splay_insertions;
   d["flat_tets_removed"] = s.flat_tets_removed;
+  d["grid"] = s.grid;
+  d["working_set_pairs"] = s.working_set_pairs;
+  d["certificate_fallbacks"] = s.certificate_fallbacks;
+  d["dead_stars"] = s.dead_stars;
+  d["redundant_points"] = s.redundant_points;
   d["peak_bytes"] = s.peak_bytes;
   d["verify_summary"] = s.verify_summary;
   d["summary"] = s.to_string();
@@ -196,6 +202,44 @@ nb::dict py_delaunay(const AnyArray& points, const std::string& algorithm, const
   // The float64 copy the library triangulated, when the input was not already one
   // (the Python layer keeps it as Delaunay.points instead of converting again).
   d["points"] = pts.converted ? gdel_py::to_numpy(std::move(pts.owned), {n, 3}) : nb::none();
+  return d;
+}
+
+// gdel::regular on host arrays: points (n, 3) and weights (n,).
+nb::dict py_regular(const AnyArray& points, const AnyArray& weights, const std::string& algorithm,
+                    const std::string& backend, int ordinal, bool certificates) {
+  require_host(points, "points");
+  require_points_shape(points, "points");
+  require_host(weights, "weights");
+  if (weights.ndim() != 1 || weights.shape(0) != points.shape(0))
+    throw nb::value_error(("weights: expected an array of shape (" + std::to_string(points.shape(0)) +
+                           ",) (one per point), got shape " + gdel_py::shape_string(weights))
+                              .c_str());
+  gdel::Options opt;
+  opt.algorithm = parse_name<gdel::Algorithm>(algorithm, "algorithm");
+  opt.backend = parse_name<gdel::Backend>(backend, "device");
+  opt.device = ordinal;
+  opt.certificates = certificates;
+  gdel_py::Contiguous<double> pts, w;
+  gdel::RegularTriangulation t;
+  {
+    nb::gil_scoped_release unlocked;
+    pts = gdel_py::as_doubles(points, "points");
+    w = gdel_py::as_doubles(weights, "weights");
+    t = gdel::regular(pts.view, w.view, opt);
+  }
+  const std::size_t n = points.shape(0);
+  const std::size_t m = static_cast<std::size_t>(t.num_tets());
+  const std::size_t k = t.redundant.size();
+  nb::dict d;
+  d["simplices"] = gdel_py::to_numpy(std::move(t.tets), {m, 4});
+  d["neighbors"] = gdel_py::to_numpy(std::move(t.neighbors), {m, 4});
+  d["redundant"] = gdel_py::to_numpy(std::move(t.redundant), {k});
+  d["representative"] = gdel_py::to_numpy(std::move(t.representative), {n});
+  d["certificates"] = certificates ? gdel_py::to_numpy(std::move(t.certificates), {k, 5}) : nb::none();
+  d["stats"] = stats_dict(t.stats);
+  d["points"] = pts.converted ? gdel_py::to_numpy(std::move(pts.owned), {n, 3}) : nb::none();
+  d["weights"] = w.converted ? gdel_py::to_numpy(std::move(w.owned), {n}) : nb::none();
   return d;
 }
 
@@ -333,6 +377,14 @@ NB_MODULE(_core, m) {
         "Returns a dict: simplices, neighbors (m, 4), failed_vertices (k,), representative (n,) as int32\n"
         "device arrays owning gdel's memory (None where empty), nsimplex, stats (with\n"
         "stats['device_input']: received / points_read pointers, converted). The GIL is released.");
+  m.def("regular", &py_regular, "points"_a, "weights"_a, "algorithm"_a = "auto", "backend"_a = "auto",
+        "ordinal"_a = 0, "certificates"_a = false,
+        nb::sig("def regular(points: typing.Any, weights: typing.Any, algorithm: str = 'auto', backend: str = 'auto', "
+                "ordinal: int = 0, certificates: bool = False) -> dict[str, typing.Any]"),
+        "Regular (weighted Delaunay) triangulation of host points (n, 3) with weights (n,) (gdel::regular).\n\n"
+        "Returns a dict: simplices (m, 4) int32, neighbors (m, 4) int32, redundant (k,) int32,\n"
+        "representative (n,) int32, certificates (k, 5) int32 or None, stats (dict), points and weights\n"
+        "(the float64 copies when the inputs were converted, else None). The GIL is released while computing.");
   m.def("verify", &py_verify, "points"_a, "simplices"_a, "weights"_a = nb::none(), "backend"_a = "auto",
         nb::sig("def verify(points: typing.Any, simplices: typing.Any, weights: typing.Any | None = None, "
                 "backend: str = 'auto') -> dict[str, typing.Any]"),
