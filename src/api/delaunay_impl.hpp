@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "api/prepare.hpp"
 #include "flip/gflip3d.hpp"
 #include "splay/gdel3d.hpp"
 #include "star4d/gstar4d.hpp"
@@ -68,46 +69,16 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   auto t0 = std::chrono::steady_clock::now();
   Buffer<double, B> X(ctx);
   const double* xp = sink.input(X, points);
-  Buffer<I64, B> rep(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));
-  I64* rp = rep.data();
-  const I64 m = sort::duplicate_representatives(ctx, xp, n, rp);
+  // duplicates, bounding box, internal (Hilbert) order; slot m = ∞ / kernel point
+  Prepared<B> pr(ctx);
+  prepare_points(ctx, xp, n, nullptr, pr);  // DegenerateInput with fewer than 4 distinct points
+  const I64 m = pr.m;
   st.distinct_points = m;
-  sink.representative(ctx, rep, n, out);
-  if (m < 4) throw DegenerateInput("need at least 4 distinct points, got " + std::to_string(m));
-  Buffer<I64, B> ids(ctx, static_cast<std::size_t>(m));  // distinct points (input ids, ascending)
-  I64* idp = ids.data();
-  par::select_indices(ctx, static_cast<std::size_t>(n), idp, [=] GDEL_HD(I64 i) { return rp[i] == i; });
-  // bounding box
-  double lo[3], hi[3];
-  {
-    Buffer<double, B> coord(ctx, static_cast<std::size_t>(m));
-    double* cp = coord.data();
-    for (int a = 0; a < 3; ++a) {
-      par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) { cp[k] = xp[3 * idp[k] + a]; });
-      lo[a] = par::reduce_min(ctx, cp, static_cast<std::size_t>(m), HUGE_VAL);
-      hi[a] = par::reduce_max(ctx, cp, static_cast<std::size_t>(m), -HUGE_VAL);
-    }
-  }
-  // internal order: distinct points along the Hilbert curve; slot m = ∞ / kernel point
-  Buffer<double, B> P(ctx, static_cast<std::size_t>(3 * (m + 1)));
-  Buffer<I64, B> sid(ctx, static_cast<std::size_t>(m + 1));
-  {
-    Buffer<double, B> dx(ctx, static_cast<std::size_t>(3 * m));
-    double* dxp = dx.data();
-    par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) {
-      for (int a = 0; a < 3; ++a) dxp[3 * k + a] = xp[3 * idp[k] + a];
-    });
-    Buffer<I64, B> ord(ctx, static_cast<std::size_t>(m));
-    I64* op = ord.data();
-    sort::hilbert_order(ctx, dxp, m, lo, hi, op);
-    double* pp = P.data();
-    I64* sp = sid.data();
-    par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) {
-      for (int a = 0; a < 3; ++a) pp[3 * k + a] = dxp[3 * op[k] + a];
-      sp[k] = idp[op[k]];
-    });
-    par::parallel_for(ctx, 1, [=] GDEL_HD(I64) { sp[m] = n; });  // K perturbs least... any fixed index works
-  }
+  sink.representative(ctx, pr.rep, n, out);
+  Buffer<double, B>& P = pr.P;
+  Buffer<I64, B>& sid = pr.sid;
+  const double* lo = pr.lo;
+  const double* hi = pr.hi;
   st.stages.push_back({"prepare (duplicates, Hilbert sort)", since(t0)});
 
   // --- gStar4D ----------------------------------------------------------------------------
