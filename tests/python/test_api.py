@@ -198,14 +198,16 @@ def test_torch_cpu_tensors():
 
 
 def test_jax_cpu_arrays():
+    jax = pytest.importorskip("jax")
     jnp = pytest.importorskip("jax.numpy")
+    cpu = jax.devices("cpu")[0]  # explicitly: jax puts arrays on a GPU by default where it has one
     p = uniform(90, 14)
-    tri = gdel.Delaunay(jnp.asarray(p.astype(np.float32)))
+    tri = gdel.Delaunay(jax.device_put(jnp.asarray(p.astype(np.float32)), cpu))
     assert isinstance(tri.simplices, np.ndarray)
     np.testing.assert_array_equal(tri.points, p.astype(np.float32).astype(np.float64))
     assert sorted_rows(tri.simplices) == sorted_rows(gdel.Delaunay(p.astype(np.float32)).simplices)
     assert gdel.check(tri.points, tri.simplices).delaunay
-    loc = tri.find_simplex(jnp.asarray(p[:5].astype(np.float32)))
+    loc = tri.find_simplex(jax.device_put(jnp.asarray(p[:5].astype(np.float32)), cpu))
     assert isinstance(loc, np.ndarray) and (loc >= 0).all()
 
 
