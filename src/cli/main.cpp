@@ -2,7 +2,7 @@
 //
 //   gdel delaunay IN -o OUT [--algorithm A] [--device D] [--check] [--stats] [--quiet]
 //   gdel delaunay --example DIST:N -o OUT ...       (built-in generated input)
-//   gdel regular IN --weights W -o OUT [--redundant R.txt] [--device D] [--check] [--stats] [--quiet]
+//   gdel regular IN --weights W -o OUT [--redundant R.txt] [--algorithm A] [--device D] [--check] [--stats] [--quiet]
 //   gdel check POINTS TETS.ele [--weights W] [--device D]
 //   gdel generate DIST N -o OUT [--seed S]
 //   gdel bench [--dist D,..] [--n N,..] [--algorithm A,..] [--device D,..] [--repeat R] [--json F]
@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
   add_common(del, common);
 
   // regular -------------------------------------------------------------------------------
-  std::string rin, rweights, rout, rredundant, rdevice = "auto";
+  std::string rin, rweights, rout, rredundant, rdevice = "auto", ralgorithm = "auto";
   bool rcheck = false, rstats = false;
   auto* reg = app.add_subcommand("regular", "regular (weighted Delaunay) triangulation of weighted points (gReg3D)");
   reg->add_option("input", rin, "points file: .xyz .txt .off .ply .node .npy (weights from --weights, or the "
@@ -146,6 +146,11 @@ int main(int argc, char** argv) {
                   "ones in no tet), with its weight where the format holds one")
       ->required();
   reg->add_option("--redundant", rredundant, "also write the ids of the redundant (hidden) points, one a line");
+  reg->add_option("--algorithm", ralgorithm,
+                  "auto | gstar4d: both run gReg3D (4-D star splaying with star death; the flip algorithms take no "
+                  "weights)")
+      ->check(CLI::IsMember(std::vector<std::string>{"auto", "gstar4d"}))
+      ->capture_default_str();
   reg->add_option("--device", rdevice, "cpu | cuda | auto")->check(CLI::IsMember(kDevices))->capture_default_str();
   reg->add_flag("--check", rcheck, "verify the result exactly (regular mode) before writing; exit 5 if it fails");
   reg->add_flag("--stats", rstats, "print time per stage, counts and memory");
@@ -299,6 +304,7 @@ int main(int argc, char** argv) {
       if (!rredundant.empty()) outputs.push_back(rredundant);
       for (const auto& p : outputs) preflight_output(p);
       gdel::Options o;
+      o.algorithm = parse_algorithm(ralgorithm);
       o.backend = parse_backend(rdevice);
       const gdel::Backend backend = gdel::resolve_backend(o.backend);
       auto t0 = Clock::now();

@@ -198,6 +198,8 @@ TEST_F(CliTest, RegularWritesEveryPointAndTheRedundantList) {
   // failures: no weights (usage), wrong count (invalid input); nothing written
   const auto before = listing();
   expect_failure(gdel({"regular", "pts.xyz", "-o", "x.ele"}), 1, "no weights");
+  expect_failure(gdel({"regular", "pts.xyz", "--weights", "w.txt", "--algorithm", "gdel3d", "-o", "x.ele"}), 1,
+                 "--algorithm");
   text("short.txt", "1\n2\n");
   expect_failure(gdel({"regular", "pts.xyz", "--weights", "short.txt", "-o", "x.ele"}), 2, "2 weights for 1500");
   auto after = listing();
