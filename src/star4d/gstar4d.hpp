@@ -37,10 +37,20 @@ void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid
   const char* name = weights ? "greg3d" : "gstar4d";
   auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
   auto t0 = std::chrono::steady_clock::now();
+  vid_t first[4];
   {
     flip::GFlip3D<B> seed(ctx, P, sid, m, flip::FlipConfig{}, st);
-    vid_t t[4];
-    seed.first_tetrahedron(t);  // degeneracy check + kernel point (slot m)
+    seed.first_tetrahedron(first);  // degeneracy check + kernel point (slot m)
+  }
+  if (m == 4) {
+    // Four affinely independent points: their (regular) triangulation is that one
+    // tetrahedron, and no point is redundant (none lies in the hull of the others). A 4-D
+    // star needs five points, so the stages below cannot run.
+    const std::int32_t none[4] = {-1, -1, -1, -1};
+    tets.assign(first, 4);
+    nbr.assign(none, 4);
+    st.stages.push_back({std::string(name) + " single tetrahedron", since(t0)});
+    return;
   }
   WorkingSets<B> ws = [&] {
     PbaOptions po;

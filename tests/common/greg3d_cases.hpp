@@ -257,6 +257,21 @@ inline void greg3d_special_cases(Backend b) {
     EXPECT_EQ(r.representative[502], 9);
   }
   {
+    SCOPED_TRACE("four distinct points (one duplicate): a single tetrahedron, no 4-D star possible");
+    const std::vector<double> P = {0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 0, 1, 0, 0};  // found by hypothesis
+    const std::vector<double> w(5, 0.0);
+    RegularTriangulation r = regular(P, w, o);
+    expect_exact_regular(P, w, r, b);
+    EXPECT_EQ(r.num_tets(), 1);
+    EXPECT_EQ(r.redundant, std::vector<std::int32_t>{1});
+    Options d = o;
+    d.algorithm = Algorithm::gstar4d;
+    const Triangulation t = delaunay(P, d);
+    EXPECT_EQ(t.num_tets(), 1);
+    EXPECT_EQ(t.stats.certificate_fallbacks, 0);
+    EXPECT_EQ(t.neighbors, std::vector<std::int32_t>(4, -1));
+  }
+  {
     SCOPED_TRACE("negative and mixed weights");
     auto P = gen::generate(gen::Distribution::Uniform, 2000, 8);
     auto w = random_weights(2000, 1.0, 10.0, 4, -1.0);
