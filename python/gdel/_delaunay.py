@@ -109,7 +109,12 @@ class Delaunay:
         device: str = "auto",
         check: bool = False,
     ) -> None:
-        raw = _arrays.delaunay(points, algorithm, device)
+        self._adopt(_arrays.delaunay(points, algorithm, device), points, device, check, None)
+
+    def _adopt(self, raw: Any, points: Any, device: str, check: bool, weights: Any) -> None:
+        """Takes the compiled layer's result; with ``check``, runs the exact verifier
+        (regular mode when ``weights`` is given) and raises unless the result meets the
+        algorithm's contract."""
         self._raw = raw
         self._origin = raw.origin
         self._input = points
@@ -117,7 +122,7 @@ class Delaunay:
         self.check_report: Optional[_check.CheckReport] = None
         if check:
             backend, _ = _arrays.resolve_device(device, raw.origin)
-            report = _check.CheckReport(**_core.verify(self._points, self._simplices, None, backend))
+            report = _check.CheckReport(**_core.verify(self._points, self._simplices, weights, backend))
             self.check_report = report
             if not report.meets_contract(self.stats["algorithm"]):
                 raise _core.GdelError(

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 from functools import cached_property
-from typing import Any, Optional
+from typing import Any
 
 import numpy as np
 
-from . import _arrays, _check, _core
+from . import _arrays
 from ._delaunay import Delaunay
 
 
@@ -63,17 +63,7 @@ class Regular(Delaunay):
         certificates: bool = False,
     ) -> None:
         raw = _arrays.regular(points, weights, device, certificates)
-        self._raw = raw
-        self._origin = raw.origin
-        self._input = points
-        self.stats: dict[str, Any] = raw.stats
-        self.check_report: Optional[_check.CheckReport] = None
-        if check:
-            backend, _ = _arrays.resolve_device(device, raw.origin)
-            report = _check.CheckReport(**_core.verify(self._points, self._simplices, raw.weights, backend))
-            self.check_report = report
-            if not report.delaunay:
-                raise _core.GdelError(f"the greg3d result failed the exact check:\n{report.summary}")
+        self._adopt(raw, points, device, check, raw.weights)
 
     @cached_property
     def weights(self) -> Any:

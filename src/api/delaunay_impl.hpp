@@ -87,10 +87,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     Buffer<std::int32_t, B> tn(ctx);
     star4d::gstar4d(ctx, P, sid, m, lo, hi, opt, st, tv, tn);
     t0 = std::chrono::steady_clock::now();
-    vid_t* tvp = tv.data();
-    const I64* sp = sid.data();
-    par::parallel_for(ctx, static_cast<I64>(tv.size()),
-                      [=] GDEL_HD(I64 i) { tvp[i] = static_cast<vid_t>(sp[tvp[i]]); });
+    to_input_ids(ctx, tv, sid);
     sink.tets(tv, tn, out);
     st.stages.push_back({"output", since(t0)});
     st.peak_bytes = static_cast<I64>(ctx.memory().peak());
@@ -131,10 +128,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     st.splay_rounds = r.splay.rounds;
     st.splay_insertions = r.splay.insertions;
     st.flat_tets_removed = r.flat_removed;
-    vid_t* tvp = tv.data();
-    const I64* sp = sid.data();
-    par::parallel_for(ctx, static_cast<I64>(tv.size()),
-                      [=] GDEL_HD(I64 i) { tvp[i] = static_cast<vid_t>(sp[tvp[i]]); });
+    to_input_ids(ctx, tv, sid);
     sink.tets(tv, tn, out);
     st.stages.push_back({"output", since(t1)});
     st.peak_bytes = static_cast<I64>(ctx.memory().peak());

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gdel/errors.hpp"
+#include "mesh/conventions.hpp"
 #include "parallel/primitives.hpp"
 #include "sort/point_sort.hpp"
 
@@ -70,6 +71,15 @@ void prepare_points(par::Context<B>& ctx, const double* xp, std::int64_t n, cons
     double* wq = pr.W.data();
     par::parallel_for(ctx, m + 1, [=] GDEL_HD(I64 k) { wq[k] = k < m ? wp[sp[k]] : 0.0; });
   }
+}
+
+// Vertex ids of a tet list, internal (Hilbert order) -> input ids, in place on the backend.
+template <class B>
+void to_input_ids(par::Context<B>& ctx, par::Buffer<vid_t, B>& tets, const par::Buffer<std::int64_t, B>& sid) {
+  vid_t* tp = tets.data();
+  const std::int64_t* sp = sid.data();
+  par::parallel_for(ctx, static_cast<std::int64_t>(tets.size()),
+                    [=] GDEL_HD(std::int64_t i) { tp[i] = static_cast<vid_t>(sp[tp[i]]); });
 }
 
 }  // namespace gdel::api

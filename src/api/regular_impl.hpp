@@ -54,9 +54,7 @@ RegularRun regular_on(par::Context<B>& ctx, std::span<const double> points, std:
   star4d::gstar4d(ctx, pr.P, pr.sid, m, pr.lo, pr.hi, opt, st, tv, tn, pr.W.data(), &deaths);
 
   t0 = std::chrono::steady_clock::now();
-  vid_t* tvp = tv.data();
-  const I64* sp = pr.sid.data();
-  par::parallel_for(ctx, static_cast<I64>(tv.size()), [=] GDEL_HD(I64 i) { tvp[i] = static_cast<vid_t>(sp[tvp[i]]); });
+  to_input_ids(ctx, tv, pr.sid);
   out.tets = tv.to_host();
   out.neighbors = tn.to_host();
   {
