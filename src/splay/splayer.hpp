@@ -88,6 +88,9 @@ struct StarView {
 
 struct SplayStats {
   I64 rounds = 0, insertions = 0, stars_pulled = 0, proofs = 0, dead = 0;
+  // the critical path of one thread per star: Σ over the build and every round of the most
+  // insertions into one star, and the most triangles one star held (largest_star())
+  I64 critical = 0, largest = 0;
 };
 
 template <class B>
@@ -244,6 +247,7 @@ class Splayer {
       std::fprintf(stderr, "splay: building %lld stars, largest working set %d\n", (long long)k,
                    k ? par::reduce_max(ctx_, cp, static_cast<std::size_t>(k), std::int32_t(0)) / 4 - 2 : 0);
     const I64 s0 = add_stars(gv, caps);
+    ss_.critical += most_per_star(lhp, k, nl);
     add_history(lk);
     Buffer<U64, B> okey(ctx_, static_cast<std::size_t>(nl));
     Buffer<vid_t, B> ordv(ctx_, static_cast<std::size_t>(nl));
@@ -350,11 +354,11 @@ class Splayer {
   // Output tets from the stars: the tet (s, a, b, c) of every link triangle abc of the
   // star of s, emitted once, by the star of its smallest vertex that has a star, unless
   // it holds ∞ or is flat (exact orient3d = 0: only on coplanar hull faces). A negative
-  // tet is an upper-hull facet: dropped when `upper_allowed` (stars of the whole 4-D hull,
-  // gStar4D), else an upper facet that survived next to ∞: an inconsistency, reported.
+  // tet would be an upper-hull facet, which no star that tried ∞ can hold: an
+  // inconsistency, reported.
   // num (slots + 1) gets the exclusive prefix count of emitted tets per slot; returns
   // their number, adds the flat tets dropped to `flat` and the exact evaluations to `exact`.
-  I64 plan_star_tets(Buffer<I64, B>& num, I64& flat, I64& exact, bool upper_allowed = false) {
+  I64 plan_star_tets(Buffer<I64, B>& num, I64& flat, I64& exact) {
     const I64 slots = slots_;
     const StarView sv = view();
     const std::int32_t* so = star_of_.data();
@@ -396,10 +400,9 @@ class Splayer {
         },
         geom::kPredicateWork);
     std::int32_t* ep = error_.data();
-    if (!upper_allowed)
-      par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
-        if (sfp[q] < 0) ep[0] = 8;
-      });
+    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
+      if (sfp[q] < 0) ep[0] = 8;
+    });
     throw_if_error("extracting tets");
     num.resize(static_cast<std::size_t>(slots + 1));
     I64* np = num.data();
@@ -407,7 +410,7 @@ class Splayer {
       vid_t v[4];
       np[q] = (candidate(q, v) && sfp[q] == 0) ? 1 : 0;
     });
-    flat += par::reduce_sum(ctx_, np, static_cast<std::size_t>(slots));  // (upper facets are not counted)
+    flat += par::reduce_sum(ctx_, np, static_cast<std::size_t>(slots));
     par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) { np[q] = sfp[q] > 0 ? 1 : 0; });
     return par::counts_to_offsets(ctx_, np, static_cast<std::size_t>(slots));
   }
@@ -487,6 +490,22 @@ class Splayer {
       }
       if (!paired) np[vp[j]] = -1;
     });
+  }
+
+  // The longest of k groups starting at heads[0..k) (the last ends at n).
+  I64 most_per_star(const I64* heads, I64 k, I64 n) {
+    if (k == 0) return 0;
+    Buffer<I64, B> len(ctx_, static_cast<std::size_t>(k));
+    I64* lp = len.data();
+    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) { lp[j] = (j + 1 < k ? heads[j + 1] : n) - heads[j]; });
+    return par::reduce_max(ctx_, lp, static_cast<std::size_t>(k), I64(0));
+  }
+
+  // Records the most triangles any star holds now in stats().largest and returns it.
+  I64 largest_star() {
+    if (nst_ == 0) return 0;
+    ss_.largest = std::max<I64>(ss_.largest, par::reduce_max(ctx_, count_.data(), static_cast<std::size_t>(nst_), 0));
+    return ss_.largest;
   }
 
   // Fails loudly if a kernel saw a broken (non-convex) star.
@@ -601,6 +620,7 @@ class Splayer {
       np[s] = 2 * (cnt[s] + 2 * static_cast<std::int32_t>(b - a)) + 4;
     });
     ensure_capacity(np);
+    ss_.critical += most_per_star(hp, static_cast<I64>(nh), n);
     // room for gone pairs: every link vertex and every insertion at most once
     Buffer<I64, B> room(ctx_, static_cast<std::size_t>(nh + 1));
     I64* rmp = room.data();
@@ -669,6 +689,9 @@ class Splayer {
   }
 
   // The death certificate of every dead star, host copy: (star vertex, 5 vertices).
+  // A certificate holding ∞ (s above the lower hull near the 3-D hull boundary: s inside
+  // the vertical prism over a lifted triangle or tet) is left out: the caller certifies
+  // such a point by locating it in the output instead.
   std::vector<vid_t> death_certificates() {
     std::vector<vid_t> out;
     if (nst_ == 0) return out;
@@ -676,7 +699,7 @@ class Splayer {
     auto ce = cert_.to_host();
     auto vv = vert_.to_host();
     for (I64 s = 0; s < nst_; ++s) {
-      if (kl[s] < 0) continue;
+      if (kl[s] < 0 || std::find(ce.begin() + 5 * s, ce.begin() + 5 * s + 5, g_.inf) != ce.begin() + 5 * s + 5) continue;
       out.push_back(vv[s]);
       for (int c = 0; c < 5; ++c) out.push_back(ce[5 * s + c]);
     }

@@ -6,7 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
 #include "common/gdel3d_cases.hpp"
+#include "common/model_cases.hpp"
+#include "io/io.hpp"
 
 namespace gdel::test {
 
@@ -39,6 +45,34 @@ inline void gstar4d_generator_cases(Backend b, std::size_t n) {
     o.algorithm = Algorithm::gstar4d;
     Triangulation t2 = delaunay(pts, o);
     EXPECT_EQ(t.tets, t2.tets);
+  }
+}
+
+// One measured gstar4d run per item of GDEL_MEASURE (comma-separated DIST:N, or a model
+// file name in .deps/models), verified exactly; prints the times per stage and the
+// splaying counts (GDEL_SPLAY_DEBUG=1 adds the largest star and the critical path).
+inline void gstar4d_measure(Backend b) {
+  const char* env = std::getenv("GDEL_MEASURE");
+  std::stringstream items(env ? env : "grid:10000,sphere:10000");
+  for (std::string item; std::getline(items, item, ',');) {
+    SCOPED_TRACE(item);
+    std::vector<double> pts;
+    const auto colon = item.find(':');
+    if (colon == std::string::npos) {
+      pts = io::read_points(models_dir() / item).xyz;
+    } else {
+      const auto d = gen::parse_distribution(item.substr(0, colon));
+      pts = gen::generate(d, static_cast<std::size_t>(std::stod(item.substr(colon + 1))), 4321);
+    }
+    Options o;
+    o.backend = b;
+    o.algorithm = Algorithm::gstar4d;
+    Triangulation t = delaunay(pts, o);
+    std::printf("== %s: %zu points, %.3f s\n%s\n", item.c_str(), pts.size() / 3, t.stats.seconds,
+                t.stats.to_string().c_str());
+    EXPECT_EQ(t.stats.certificate_fallbacks, 0);
+    t.stats.algorithm = "gdel3d";  // expect_exact_delaunay's label check
+    expect_exact_delaunay(pts, t, b);
   }
 }
 
