@@ -5,12 +5,13 @@
 //   gdel-bench [--dist uniform,gaussian,...] [--n 100000,1000000] [--methods LIST]
 //              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify]
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
-//   methods: gdel3d-cuda, gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
+//   methods: gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            cgal, cgal-par   (default: all available)
 //   weighted points (regular triangulation): greg3d-cuda, greg3d-cpu, cgal-regular, cgal-regular-par,
 //            with weights scale * h^2 * U(0,1), h the mean spacing of the points' bounding box
 //            (--weight-scale, default 3: about half the points redundant on uniform input).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <random>
 #include <cstdio>
@@ -145,10 +146,32 @@ int main(int argc, char** argv) {
           if (o.backend == gdel::Backend::Cuda && !have_cuda) continue;
           if (o.backend == gdel::Backend::Cpu && n > cpu_max) continue;
           gdel::Triangulation t;
+          // "-dev" methods: points already in device memory, results left there
+          // (gdel::delaunay_device); the upload is not timed, the results are copied back
+          // only for the verifier.
+          const bool dev = m.size() > 4 && m.compare(m.size() - 4, 4, "-dev") == 0;
+          double upload_s = 0;
           for (int k = 0; k < repeat; ++k) {
-            t = gdel::delaunay(pts, o);
-            times.push_back(t.stats.seconds);
+            if (!dev) {
+              t = gdel::delaunay(pts, o);
+              times.push_back(t.stats.seconds);
+              continue;
+            }
+            auto tu = std::chrono::steady_clock::now();
+            gdel::DeviceArray<double> dp = gdel::copy_to_device(pts, o.device);
+            upload_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - tu).count();
+            gdel::DevicePoints in;
+            in.data = dp.data();
+            in.n = static_cast<std::int64_t>(n);
+            in.device = o.device;
+            gdel::DeviceTriangulation d = gdel::delaunay_device(in, o);
+            times.push_back(d.stats.seconds);
+            if (k + 1 == repeat) {
+              t.tets = gdel::copy_to_host(d.tets);
+              t.stats = d.stats;
+            }
           }
+          if (dev) r.note = "upload " + std::to_string(upload_s) + " s (not timed); ";
           r.tets = t.num_tets();
           r.flips = t.stats.flips23 + t.stats.flips32;
           r.failed = star ? t.stats.certificate_fallbacks : exact ? t.stats.repair_failed_vertices : t.stats.failed_vertices;
@@ -168,7 +191,7 @@ int main(int argc, char** argv) {
             for (auto& [name, s] : t.stats.stages)
               if (name.find("repair") != std::string::npos) rep = s;
             std::ostringstream nt;
-            nt << "repair " << rep << " s, stars built " << t.stats.stars_built << " pulled " << t.stats.stars_pulled
+            nt << r.note << "repair " << rep << " s, stars built " << t.stats.stars_built << " pulled " << t.stats.stars_pulled
                << ", rounds " << t.stats.splay_rounds;
             r.note = nt.str();
           }

@@ -83,7 +83,7 @@ step() {
   fi
   echo "== step $name: rc=$rc ${dt}s$note" | tee -a "$out/summary.txt"
   grep -E '^\[  FAILED  \]|Failure$|^Expected|^Which is|^  Actual' "$log" | head -20
-  grep -E '^[a-z_]+ +[0-9]+ (gstar4d|gdel3d|greg3d|cgal)' "$log" | cut -c1-200
+  grep -E '^[a-z_]+ +[0-9]+ (gstar4d|gdel3d|gflip3d|greg3d|cgal)' "$log" | cut -c1-200
 }
 gb="$bin/gdel-bench"
 jdir=/tmp/gpu-run-json
@@ -150,6 +150,15 @@ case "$plan" in
     bench reg_1e5_1e6 120 --dist uniform,gaussian,ball --n 100000,1000000 \
       --methods greg3d-cuda,cgal-regular,cgal-regular-par --repeat 1
     bench reg_1e7 150 --dist uniform --n 10000000 --methods greg3d-cuda,cgal-regular-par,cgal-regular --repeat 1
+    ;;
+  perf)  # step profiles (GDEL_PROFILE=1, parallel/profile.hpp) of gFlip3D and gDel3D, output on the
+          # host and in device memory; the CPU backend on 2 host cores against CGAL on the same cores
+    export GDEL_PROFILE=1
+    bench p_e6 90 --dist uniform,thin_shell,gaussian --n 1000000 --methods gflip3d-cuda,gdel3d-cuda,gdel3d-cuda-dev --repeat 1
+    bench p_e7 120 --dist uniform --n 10000000 --methods gdel3d-cuda-dev,gdel3d-cuda,gflip3d-cuda --repeat 1
+    step p_cpu2 200 taskset -c 0,1 env OMP_NUM_THREADS=2 OMP_WAIT_POLICY=PASSIVE "$gb" --dist uniform \
+      --n 100000,1000000 --methods gdel3d-cpu,cgal --repeat 1
+    unset GDEL_PROFILE
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1

@@ -29,6 +29,16 @@ enum class InsertionRule {
   Random,        // a hash of the point index
 };
 
+// What gFlip3D (and so gDel3D) starts inserting from (docs/grid.md).
+enum class Initial {
+  Default,  // one tetrahedron of extreme points (+ its cones to infinity)
+  grid,     // the Delaunay triangulation of a coarse grid's sample (one site per occupied
+            // voxel), obtained from the dual of the sample's digital Voronoi diagram by star
+            // splaying and certified exactly; falls back to Default on degenerate samples
+            // (Stats::grid_fallbacks says so). gstar4d: its grid already is its start (no change)
+};
+const char* to_string(Initial i);
+
 struct Options {
   Algorithm algorithm = Algorithm::Auto;
   Backend backend = Backend::Auto;
@@ -48,8 +58,10 @@ struct Options {
   // gstar4d: side W of the W^3 digital Voronoi grid (0 = automatic: about 8 voxels per
   // point within a quarter of the free memory; docs/gstar4d.md), and the least number
   // of candidates in a working set (pumping, default 8).
+  // With initial = grid: the coarse grid's side (0 = automatic: about 16 points per voxel).
   int grid = 0;
   int min_candidates = 8;
+  Initial initial = Initial::Default;
   // gdel::regular: fill RegularTriangulation::certificates (a proof per redundant point).
   bool certificates = false;
   // On the CUDA backend: when the device runs out of memory (OutOfDeviceMemory), run the
@@ -79,12 +91,23 @@ struct Stats {
   // tets (exact zero volume, on coplanar hull faces) dropped from the output
   std::int64_t repair_failed_vertices = 0, stars_built = 0, stars_pulled = 0, splay_rounds = 0,
                splay_insertions = 0, flat_tets_removed = 0;
-  // gstar4d: grid side, candidate pairs in the working sets, and whether the exact
+  // gstar4d (or Options::initial = grid: its coarse grid): grid side; gstar4d: candidate
+  // pairs in the working sets, and whether the exact
   // certificate of its result failed so that gdel3d recomputed it (0 or 1)
   std::int64_t grid = 0, working_set_pairs = 0, certificate_fallbacks = 0;
   // greg3d (gdel::regular): stars that died (their points proved redundant by a death
   // certificate), and all redundant points (dead, hidden duplicates, upper hull only)
   std::int64_t dead_stars = 0, redundant_points = 0;
+  // Options::initial = grid (docs/grid.md): sites of the coarse grid (the sample), whether
+  // the grid start was abandoned for the default one (0 or 1; Stats::stages says why), and
+  // the raw dual of the sites' digital Voronoi diagram under the grid perturbation: its
+  // distinct site tets, how many are flat / inverted / folded, its facets in more than two
+  // tets or in two on the same side, its cospherical and non-Delaunay facet pairs, and how
+  // many of the sites' Delaunay tets it holds or misses (exact predicates, no perturbation)
+  std::int64_t grid_sites = 0, grid_fallbacks = 0, dual_tets = 0, dual_flat = 0, dual_inverted = 0,
+               dual_folded = 0, dual_overshared_facets = 0, dual_overlapping_facets = 0,
+               dual_cospherical_pairs = 0, dual_non_delaunay_pairs = 0, dual_delaunay_tets = 0,
+               dual_missed_delaunay_tets = 0;
   std::int64_t peak_bytes = 0;         // peak backend memory (device memory for CUDA)
   std::string verify_summary;          // with Options::verify
   std::string to_string() const;
@@ -192,6 +215,12 @@ struct DeviceTriangulation {
   bool converted_input = false;
   std::int64_t num_tets() const { return tets.size() / 4; }
 };
+
+// Copies between host memory and CUDA device memory, for callers that have no CUDA
+// toolchain of their own (the benchmark, tests, C++ programs built with a host compiler).
+// CUDA builds only (BackendUnavailable otherwise); OutOfDeviceMemory when cudaMalloc fails.
+DeviceArray<double> copy_to_device(std::span<const double> host, int device = 0);
+std::vector<std::int32_t> copy_to_host(const DeviceArray<std::int32_t>& a);
 
 // gdel::delaunay for points in device memory: the same validation (NaN/Inf, exact
 // range, run on the device by reductions; only a few scalars reach the host),

@@ -157,6 +157,13 @@ DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& o
 
 #if !defined(GDEL_HAVE_CUDA)
 void device_free(void*, int) noexcept {}  // nothing is ever allocated without CUDA
+DeviceArray<double> copy_to_device(std::span<const double>, int) {
+  throw BackendUnavailable("copy_to_device: this build of gdel has no CUDA support (rebuild with the cuda preset)");
+}
+std::vector<std::int32_t> copy_to_host(const DeviceArray<std::int32_t>& a) {
+  if (a.size() == 0) return {};
+  throw BackendUnavailable("copy_to_host: this build of gdel has no CUDA support (rebuild with the cuda preset)");
+}
 #endif
 
 }  // namespace gdel

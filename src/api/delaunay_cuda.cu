@@ -117,6 +117,22 @@ struct MergeExtent {
 
 }  // namespace api::device_detail
 
+DeviceArray<double> copy_to_device(std::span<const double> host, int device) {
+  GDEL_CUDA_CHECK(cudaSetDevice(device));
+  auto a = api::device_detail::allocate<double>(device, static_cast<std::int64_t>(host.size()));
+  if (!host.empty()) GDEL_CUDA_CHECK(cudaMemcpy(a.data(), host.data(), host.size_bytes(), cudaMemcpyHostToDevice));
+  return a;
+}
+
+std::vector<std::int32_t> copy_to_host(const DeviceArray<std::int32_t>& a) {
+  std::vector<std::int32_t> h(static_cast<std::size_t>(a.size()));
+  if (a.size() > 0) {
+    GDEL_CUDA_CHECK(cudaSetDevice(a.device()));
+    GDEL_CUDA_CHECK(cudaMemcpy(h.data(), a.data(), h.size() * sizeof(std::int32_t), cudaMemcpyDeviceToHost));
+  }
+  return h;
+}
+
 namespace cuda_backend {
 
 DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& options) {

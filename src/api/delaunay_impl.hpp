@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "api/prepare.hpp"
 #include "flip/gflip3d.hpp"
+#include "grid/initial.hpp"
 #include "splay/gdel3d.hpp"
 #include "star4d/gstar4d.hpp"
 #include "gdel/delaunay.hpp"
@@ -52,6 +54,14 @@ struct HostOutput {
   }
 };
 
+// GDEL_PROFILE: the step profile of this call to stderr (parallel/profile.hpp).
+template <class B>
+void report_profile(Context<B>& ctx, const Stats& st) {
+  if (!ctx.profiling()) return;
+  std::fprintf(stderr, "gdel profile (%s on %s, %lld points):\n%s", st.algorithm.c_str(), st.backend.c_str(),
+               static_cast<long long>(st.points), par::format_profile(ctx.profile_report()).c_str());
+}
+
 template <class B, class Out>
 Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, const Options& opt, Out& sink) {
   using I64 = std::int64_t;
@@ -71,6 +81,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   const double* xp = sink.input(X, points);
   // duplicates, bounding box, internal (Hilbert) order; slot m = ∞ / kernel point
   Prepared<B> pr(ctx);
+  ctx.profile_start();
   prepare_points(ctx, xp, n, nullptr, pr);  // DegenerateInput with fewer than 4 distinct points
   const I64 m = pr.m;
   st.distinct_points = m;
@@ -80,6 +91,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   const double* lo = pr.lo;
   const double* hi = pr.hi;
   st.stages.push_back({"prepare (duplicates, Hilbert sort)", since(t0)});
+  par::mark(ctx, "prepare (duplicates, Hilbert sort)");
 
   // --- gStar4D ----------------------------------------------------------------------------
   if (opt.algorithm == Algorithm::gstar4d) {
@@ -92,6 +104,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     st.stages.push_back({"output", since(t0)});
     st.peak_bytes = static_cast<I64>(ctx.memory().peak());
     st.seconds = since(t_start);
+    report_profile(ctx, st);
     return out;
   }
 
@@ -101,12 +114,14 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   cfg.terminal = opt.terminal_flipping;
   cfg.reorder_tets = opt.reorder_tets;
   flip::GFlip3D<B> alg(ctx, P, sid, m, cfg, st);
+  if (opt.initial == Initial::grid) grid::grid_initial(ctx, alg, P, sid, m, lo, hi, opt, st);  // else: first tet
   alg.run();
 
   // --- output ----------------------------------------------------------------------------
   t0 = std::chrono::steady_clock::now();
   auto& mesh = alg.mesh();
   mesh.compact();
+  par::mark(ctx, "output: compact mesh");
   const I64 nt = mesh.size();
   mesh::MeshView mv = mesh.view();
   const vid_t inf = alg.infinite();
@@ -115,11 +130,13 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     auto t1 = std::chrono::steady_clock::now();
     splay::GDel3D<B> rep(ctx, mesh, g, m);
     rep.repair();
+    par::mark(ctx, "gdel3d repair");
     st.stages.push_back({"gdel3d repair (star splaying)", since(t1)});
     t1 = std::chrono::steady_clock::now();
     Buffer<vid_t, B> tv(ctx);
     Buffer<std::int32_t, B> tn(ctx);
     rep.extract(tv, tn);
+    par::mark(ctx, "gdel3d extract");
     const auto& r = rep.result();
     st.exact_evaluations += r.exact_evaluations;
     st.repair_failed_vertices = r.failed;
@@ -129,10 +146,13 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     st.splay_insertions = r.splay.insertions;
     st.flat_tets_removed = r.flat_removed;
     to_input_ids(ctx, tv, sid);
+    par::mark(ctx, "output: input ids");
     sink.tets(tv, tn, out);
+    par::mark(ctx, "output: results to caller");
     st.stages.push_back({"output", since(t1)});
     st.peak_bytes = static_cast<I64>(ctx.memory().peak());
     st.seconds = since(t_start);
+    report_profile(ctx, st);
     return out;
   }
   // failed vertices: vertices of facets that are not locally Delaunay (the repair's test)
@@ -145,6 +165,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
                                           [=] GDEL_HD(I64 v) { return fvp[v] != 0; });
     st.failed_vertices = static_cast<I64>(nfv);
     sink.failed_vertices(ctx, fl, nfv, sid, out);
+    par::mark(ctx, "output: failed vertices");
   }
   // finite tets, input ids, neighbours (-1 across the hull)
   Buffer<tid_t, B> fin(ctx, static_cast<std::size_t>(nt + 1));
@@ -168,10 +189,13 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   });
   tv.resize(static_cast<std::size_t>(4 * nfin));
   tn.resize(static_cast<std::size_t>(4 * nfin));
+  par::mark(ctx, "output: finite tets, input ids");
   sink.tets(tv, tn, out);
+  par::mark(ctx, "output: results to caller");
   st.peak_bytes = static_cast<I64>(ctx.memory().peak());
   st.stages.push_back({"output", since(t0)});
   st.seconds = since(t_start);
+  report_profile(ctx, st);
   return out;
 }
 

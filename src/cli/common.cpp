@@ -36,6 +36,21 @@ Algorithm parse_algorithm(const std::string& s) {
   throw UsageError("--algorithm must be auto, gdel3d, gstar4d or gflip3d, not '" + s + "'");
 }
 
+std::string grid_stats_line(const gdel::Stats& s) {
+  std::string l = "  initial grid: " + std::to_string(s.grid) + "^3, " + std::to_string(s.grid_sites) + " sites" +
+                  (s.grid_fallbacks ? " (not used: default start, see the stages)" : "") + "; raw dual: " +
+                  std::to_string(s.dual_tets) + " site tets, " + std::to_string(s.dual_flat) + " flat, " +
+                  std::to_string(s.dual_inverted) + " inverted, " + std::to_string(s.dual_folded) + " folded, " +
+                  std::to_string(s.dual_overshared_facets) + " facets in > 2 tets, " +
+                  std::to_string(s.dual_overlapping_facets) + " overlapping, " +
+                  std::to_string(s.dual_cospherical_pairs) + " cospherical / " +
+                  std::to_string(s.dual_non_delaunay_pairs) + " non-Delaunay facet pairs";
+  if (!s.grid_fallbacks)
+    l += "; sites' Delaunay tets in the dual " + std::to_string(s.dual_delaunay_tets) + ", missing " +
+         std::to_string(s.dual_missed_delaunay_tets);
+  return l;
+}
+
 void preflight_output(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   std::string shown = "'";  // (built in steps: GCC 12 warns falsely on "'" + s + "'")

@@ -45,6 +45,8 @@ std::size_t parse_count(const std::string& text, const std::string& what);
 Backend parse_backend(const std::string& s);
 // "auto" | "gdel3d" | "gstar4d" | "gflip3d".
 Algorithm parse_algorithm(const std::string& s);
+// The `--stats` line of Options::initial = grid: the coarse grid, the sample, the raw dual.
+std::string grid_stats_line(const gdel::Stats& s);
 
 // Before any work: the folder of each path exists, is a folder and is writable, and the path
 // itself is not a folder. OutputError naming the path otherwise. (A full disk or a race can

@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> kAlgorithms = {"auto", "gdel3d", "gstar4d", "gflip3d"};
 
   // delaunay ------------------------------------------------------------------------------
-  std::string in, out, algorithm = "auto", device = "auto", example;
+  std::string in, out, algorithm = "auto", device = "auto", example, initial = "default";
   bool check = false, stats = false, terminal = false;
   std::uint64_t seed = 1;
   auto* del = app.add_subcommand("delaunay", "triangulate points and write the mesh");
@@ -130,6 +130,11 @@ int main(int argc, char** argv) {
   del->add_option("--seed", seed, "seed for --example")->capture_default_str();
   del->add_flag("--check", check, "verify the result exactly before writing it; exit 5 (and write nothing) if it fails");
   del->add_flag("--terminal-flipping", terminal, "gFlip3D's insert-all-then-flip variant (for study)");
+  del->add_option("--initial", initial,
+                  "what gFlip3D/gDel3D start from: default (one tetrahedron) | grid (the Delaunay triangulation of "
+                  "a coarse grid's sample, from the dual of its digital Voronoi diagram; docs/grid.md)")
+      ->check(CLI::IsMember(std::vector<std::string>{"default", "grid"}))
+      ->capture_default_str();
   del->add_flag("--stats", stats, "print time per stage, counts and memory");
   add_common(del, common);
 
@@ -234,6 +239,7 @@ int main(int argc, char** argv) {
       o.algorithm = parse_algorithm(algorithm);
       o.backend = parse_backend(device);
       o.terminal_flipping = terminal;
+      o.initial = initial == "grid" ? gdel::Initial::grid : gdel::Initial::Default;
       const gdel::Backend backend = gdel::resolve_backend(o.backend);  // BackendUnavailable: exit 4, before reading
 
       auto t0 = Clock::now();
@@ -288,6 +294,7 @@ int main(int argc, char** argv) {
       }
       if (stats) {
         std::printf("%s\n", t.stats.to_string().c_str());
+        if (o.initial == gdel::Initial::grid) std::printf("%s\n", grid_stats_line(t.stats).c_str());
         std::printf("  command: read %.3f s, triangulate %.3f s, verify %.3f s, write %.3f s\n", read_s, tri_s,
                     verify_s, write_s);
       }

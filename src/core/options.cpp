@@ -1,3 +1,4 @@
+#include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "gdel/options.hpp"
 #include "core/backend_select.hpp"
@@ -9,6 +10,14 @@ const char* to_string(Backend b) {
     case Backend::Auto: return "auto";
     case Backend::Cpu: return "cpu";
     case Backend::Cuda: return "cuda";
+  }
+  return "?";
+}
+
+const char* to_string(Initial i) {
+  switch (i) {
+    case Initial::Default: return "default";
+    case Initial::grid: return "grid";
   }
   return "?";
 }

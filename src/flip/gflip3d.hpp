@@ -66,9 +66,11 @@ class GFlip3D {
   void run() {
     debug_ = std::getenv("GDEL_CHECK_MESH") != nullptr;
     auto t0 = std::chrono::steady_clock::now();
-    init();
+    const bool preset = mesh_.size() > 0;  // init_from() gave the start (Options::initial = grid)
+    if (!preset) init();
+    par::mark(ctx_, "first tetrahedron + location");
     check_mesh("after init");
-    stage("initial tetrahedron + location", t0);
+    if (!preset) stage("initial tetrahedron + location", t0);
     bool flipping = !cfg_.terminal;
     bool flipped_all_along = flipping;
     std::int64_t remaining = static_cast<std::int64_t>(todo_.size());
@@ -118,6 +120,27 @@ class GFlip3D {
   mesh::TetMesh<B>& mesh() { return mesh_; }
   vid_t infinite() const { return static_cast<vid_t>(n_); }
   Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_)}; }
+
+  // --- a given initial structure (src/grid/initial.hpp, Options::initial = grid) ---------
+  // Instead of init()'s first tetrahedron: a valid triangulation of some of the points
+  // with a cone (facet, ∞) over every hull facet — nt tets, positively oriented, with
+  // their adjacency (4 packed facets per tet, none -1), backend memory — the kernel point
+  // already stored as point n (strictly inside the hull of those tets), vert_tet (n: the
+  // tet holding each uninserted point, -1 for the mesh's vertices) and the uninserted
+  // points todo. Call before run(), which then inserts and flips from there.
+  void init_from(const Buffer<mesh::Tet, B>& tets, const Buffer<fid_t, B>& opp, std::int64_t nt,
+                 Buffer<tid_t, B>&& vert_tet, Buffer<vid_t, B>&& todo) {
+    inv_scale_ = inverse_scale();
+    mesh_.reserve(std::max<std::int64_t>(8 * n_ + 64, 2 * nt + 64));  // fresh slots are dead
+    par::detail::Memory<B>::copy(ctx_, mesh_.tets().data(), tets.data(), static_cast<std::size_t>(nt) * sizeof(mesh::Tet));
+    par::detail::Memory<B>::copy(ctx_, mesh_.opp().data(), opp.data(), static_cast<std::size_t>(4 * nt) * sizeof(fid_t));
+    par::fill(ctx_, mesh_.state().data(), static_cast<std::size_t>(nt), std::uint8_t(mesh::kAlive));
+    mesh_.face_flags().memset(0);
+    mesh_.set_size(nt);
+    grow_aux();
+    vert_tet_ = std::move(vert_tet);
+    todo_ = std::move(todo);
+  }
 
  // (The steps below are public only because nvcc's extended __host__ __device__ lambdas
  // may not live in private member functions; they are not an interface.)
@@ -424,6 +447,7 @@ class GFlip3D {
       std::uint64_t key = (std::uint64_t(bits) << 32) | std::uint32_t(0xffffffffu - std::uint32_t(q));
       par::atomic_max(best + t, key);
     });
+    par::mark(ctx_, "insert: scores");
     // 2. winners
     Buffer<std::int64_t, B> win(ctx_, static_cast<std::size_t>(u));
     std::int64_t* wp = win.data();
@@ -431,6 +455,7 @@ class GFlip3D {
       const vid_t q = U[i];
       return std::uint32_t(best[vt[q]]) == std::uint32_t(0xffffffffu - std::uint32_t(q));
     }));
+    par::mark(ctx_, "insert: select winners");
     // 3. slots: 3 new per split (child 0 reuses the split tet's slot)
     const mesh::SlotSource src = claim(3 * k);
     m = mesh_.view();
@@ -484,6 +509,7 @@ class GFlip3D {
         }
       }
     });
+    par::mark(ctx_, "insert: split");
     // 5. relocate the remaining points of split tets among the children
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
     const Geo gg = g;
@@ -502,6 +528,7 @@ class GFlip3D {
     st_.exact_evaluations += fast_then_exact(
         ctx_, u, und.data(), [=] GDEL_HD(std::int64_t i) { return reloc(i, nullptr, false); },
         [=] GDEL_HD(std::int64_t i, double* work) { reloc(i, work, true); });
+    par::mark(ctx_, "insert: relocate in split");
     // 6. reset split marks, drop inserted points from the work list
     par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) { split_of[ch[4 * s]] = -1; });
     Buffer<vid_t, B> rest(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
@@ -509,6 +536,7 @@ class GFlip3D {
                                  [=] GDEL_HD(vid_t q) { return vt[q] >= 0; });
     rest.resize(r);
     todo_ = std::move(rest);
+    par::mark(ctx_, "insert: compact points");
     // the new children are the active set of the next flip loop
     active_ = std::move(child);
     return k;
@@ -552,11 +580,13 @@ class GFlip3D {
           return p != kUndecidedResult;
         },
         [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_flip<true>(g, m, A[k], work); });
+    par::mark(ctx_, "flip: propose");
     // proposers
     Buffer<std::int64_t, B> pl(ctx_, static_cast<std::size_t>(na));
     std::int64_t* plp = pl.data();
     std::int64_t np = static_cast<std::int64_t>(par::select_indices(
         ctx_, static_cast<std::size_t>(na), plp, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
+    par::mark(ctx_, "flip: select proposers");
     if (np == 0) return false;
     // vote: the smallest proposer index wins each tet; accepted flips are disjoint
     std::int32_t* vote = aux_vote_.data();
@@ -590,6 +620,7 @@ class GFlip3D {
         par::select_indices(ctx_, static_cast<std::size_t>(np), flp, [=] GDEL_HD(std::int64_t j) { return ap[j] != 0; }));
     // flips' proposer positions in A
     par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { flp[f] = plp[flp[f]]; });
+    par::mark(ctx_, "flip: vote + select accepted");
     if (debug_) {  // accepted flips must touch disjoint, alive tets
       Buffer<tid_t, B> tt(ctx_, static_cast<std::size_t>(3 * nfl));
       tid_t* ttp = tt.data();
@@ -637,6 +668,7 @@ class GFlip3D {
     st_.flips32 += nfl - n23;
     const mesh::SlotSource src = claim(n23);
     m = mesh_.view();
+    par::mark(ctx_, "flip: count 2-3 + claim slots");
     // records
     const std::int64_t log0 = static_cast<std::int64_t>(log_.size());
     log_.resize(static_cast<std::size_t>(log0 + nfl));
@@ -655,6 +687,7 @@ class GFlip3D {
     st_.exact_evaluations += fast_then_exact(
         ctx_, nfl, und2.data(), [=] GDEL_HD(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
         [=] GDEL_HD(std::int64_t f, double* work) { bfr.template run<true>(f, work); });
+    par::mark(ctx_, "flip: records");
     // (b) slots, vertices, internal links, external messages
     par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
       FlipRec& r = rec[f];
@@ -706,6 +739,7 @@ class GFlip3D {
         }
       }
     });
+    par::mark(ctx_, "flip: write tets");
     // adjacency across external faces
     par::parallel_for(ctx_, 6 * nfl, [=] GDEL_HD(std::int64_t e) {
       const fid_t nf = en[e];
@@ -722,6 +756,7 @@ class GFlip3D {
       }
       m.opp[4 * std::int64_t(facet_tet(nf)) + facet_face(nf)] = nb;
     });
+    par::mark(ctx_, "flip: adjacency");
     // 3-2 flips free their third slot, in flip order (deterministic free stack)
     if (nfl > n23) {
       Buffer<tid_t, B> freed(ctx_, static_cast<std::size_t>(nfl - n23));
@@ -745,6 +780,7 @@ class GFlip3D {
     std::size_t na2 = par::copy_if(ctx_, nx, act.data(), nu, [=] GDEL_HD(tid_t t) { return t >= 0; });
     act.resize(na2);
     active_ = std::move(act);
+    par::mark(ctx_, "flip: next active set");
     if (with_log) log_iters_.push_back(static_cast<std::int64_t>(log_.size()));
     else log_.clear();
     return true;
@@ -817,6 +853,7 @@ class GFlip3D {
     st_.exact_evaluations += fast_then_exact(
         ctx_, u, und.data(), [=] GDEL_HD(std::int64_t i) { return walk(i, nullptr, false); },
         [=] GDEL_HD(std::int64_t i, double* work) { walk(i, work, true); });
+    par::mark(ctx_, "relocate: DAG walk");
     // reset next[] for the consumed slots
     par::parallel_for(ctx_, nrec, [=] GDEL_HD(std::int64_t f) {
       for (int o = 0; o < 3; ++o)

@@ -8,10 +8,13 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "core/macros.hpp"
+#include "parallel/profile.hpp"
 
 #if defined(__CUDACC__)
 #include <cuda_runtime.h>
@@ -57,14 +60,34 @@ class Context;
 template <>
 class Context<Cpu> {
  public:
-  Context() = default;
+  Context() { profile_start(); }
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
   MemoryStats& memory() { return mem_; }
   void synchronize() {}
 
+  // Step profiler (parallel/profile.hpp): mark(name) charges the time since the
+  // previous mark to name; profile_start() sets the origin; profile_report() sums.
+  bool profiling() const { return prof_on_; }
+  void mark(const char* name) {
+    if (!prof_on_) return;
+    prof_names_.push_back(name);
+    prof_t_.push_back(now());
+  }
+  void profile_start() {
+    prof_names_.clear();
+    prof_t_.assign(1, now());
+  }
+  ProfileTotals profile_report() const { return profile_totals(prof_names_, prof_t_); }
+
  private:
+  static double now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
   MemoryStats mem_;
+  bool prof_on_ = profiling_requested();
+  std::vector<const char*> prof_names_;
+  std::vector<double> prof_t_;
 };
 
 #if defined(__CUDACC__)
@@ -83,12 +106,34 @@ class Context<Cuda> {
   int sm_count() const { return sm_count_; }
   void synchronize();
 
+  // Step profiler (parallel/profile.hpp): events on the stream, read back by
+  // profile_report() (synchronizes).
+  bool profiling() const { return prof_on_; }
+  void mark(const char* name) {
+    if (!prof_on_) return;
+    prof_names_.push_back(name);
+    record_event();
+  }
+  void profile_start();
+  ProfileTotals profile_report();
+
  private:
+  void record_event();
   MemoryStats mem_;
   cudaStream_t stream_ = nullptr;
   int device_ = 0;
   int sm_count_ = 1;
+  bool prof_on_ = profiling_requested();
+  std::vector<const char*> prof_names_;
+  std::vector<cudaEvent_t> prof_events_;  // pool; the first prof_used_ are recorded
+  std::size_t prof_used_ = 0;
 };
 #endif
+
+// Marks the end of a profiled step (no-op unless GDEL_PROFILE is set).
+template <class B>
+inline void mark(Context<B>& c, const char* name) {
+  c.mark(name);
+}
 
 }  // namespace gdel::par

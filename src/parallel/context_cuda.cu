@@ -14,6 +14,7 @@ Context<Cuda>::Context(int device) : device_(device) {
   GDEL_CUDA_CHECK(cudaSetDevice(device_));
   GDEL_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
   GDEL_CUDA_CHECK(cudaDeviceGetAttribute(&sm_count_, cudaDevAttrMultiProcessorCount, device_));
+  if (prof_on_) profile_start();
 }
 
 Context<Cuda>::~Context() {
@@ -21,6 +22,35 @@ Context<Cuda>::~Context() {
     cudaStreamSynchronize(stream_);
     cudaStreamDestroy(stream_);
   }
+  for (cudaEvent_t e : prof_events_) cudaEventDestroy(e);
+}
+
+void Context<Cuda>::record_event() {
+  if (prof_used_ == prof_events_.size()) {
+    cudaEvent_t e;
+    GDEL_CUDA_CHECK(cudaEventCreate(&e));
+    prof_events_.push_back(e);
+  }
+  GDEL_CUDA_CHECK(cudaEventRecord(prof_events_[prof_used_++], stream_));
+}
+
+void Context<Cuda>::profile_start() {
+  if (!prof_on_) return;
+  prof_names_.clear();
+  prof_used_ = 0;
+  record_event();
+}
+
+ProfileTotals Context<Cuda>::profile_report() {
+  if (!prof_on_ || prof_used_ == 0) return {};
+  GDEL_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  std::vector<double> t(prof_used_, 0.0);
+  for (std::size_t k = 1; k < prof_used_; ++k) {
+    float ms = 0;
+    GDEL_CUDA_CHECK(cudaEventElapsedTime(&ms, prof_events_[0], prof_events_[k]));
+    t[k] = 1e-3 * ms;
+  }
+  return profile_totals(prof_names_, t);
 }
 
 void Context<Cuda>::synchronize() { GDEL_CUDA_CHECK(cudaStreamSynchronize(stream_)); }
