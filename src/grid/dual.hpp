@@ -200,7 +200,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   const I64* o = ord.data();
   par::Buffer<I64, B> heads(ctx, static_cast<std::size_t>(G + 1));
   I64* hd = heads.data();
-  const I64 U = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(G), hd, [=] GDEL_HD(I64 r) {
+  I64 U = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(G), hd, [=] GDEL_HD(I64 r) {
     return r == 0 || ghp[o[r]] != ghp[o[r - 1]] || glp[o[r]] != glp[o[r - 1]];
   }));
   par::fill(ctx, hd + U, 1, G);
@@ -278,7 +278,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   const I64* fo = ford.data();
   par::Buffer<I64, B> fheads(ctx, static_cast<std::size_t>(F + 1));
   I64* fhd = fheads.data();
-  const I64 NF = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(F), fhd, [=] GDEL_HD(I64 r) {
+  I64 NF = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(F), fhd, [=] GDEL_HD(I64 r) {
     const I64 a = fo[r];
     if (fhp[a] == ~U64(0)) return false;
     return r == 0 || fhp[a] != fhp[fo[r - 1]] || flp[a] != flp[fo[r - 1]];

@@ -139,7 +139,7 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
     return (std::int64_t(vox[3 * i + 2]) * W + vox[3 * i + 1]) * W + vox[3 * i];
   };
   Buffer<vid_t, B> S(ctx, static_cast<std::size_t>(m));  // the sites, ascending internal ids
-  const std::int64_t k = static_cast<std::int64_t>(par::select_indices(
+  std::int64_t k = static_cast<std::int64_t>(par::select_indices(
       ctx, static_cast<std::size_t>(m), S.data(), [=] GDEL_HD(vid_t i) { return site[voxel_of(i)] == i; }));
   S.resize(static_cast<std::size_t>(k));
   st.grid_sites = k;

@@ -72,9 +72,9 @@ class StarStage {
   StarStage(Context<B>& ctx, flip::Geo g, I64 m) : ctx_(ctx), g_(g), m_(m), sp_(ctx, g, static_cast<vid_t>(m + 1)) {}
 
   // Pseudo-random long-range partners added to every working set (a fixed hash of the
-  // point: deterministic). Not needed for correctness (the ∞-link check is); kept as an
-  // option to study the splaying work they save or cost.
-  int long_range = std::getenv("GDEL_LR") ? std::atoi(std::getenv("GDEL_LR")) : 0;  // TEMP
+  // point: deterministic). Not needed for correctness (the ∞-link check is); a knob to
+  // study the splaying work they save or cost (0: none, the default).
+  int long_range = 0;
 
   splay::Splayer<B>& splayer() { return sp_; }
   const StarStageResult& result() const { return res_; }
@@ -205,7 +205,7 @@ class StarStage {
     // hull vertices in id order (the stars of live hull vertices)
     Buffer<vid_t, B> hv(ctx_, static_cast<std::size_t>(std::max<I64>(ns, 1)));
     Buffer<I64, B> hs(ctx_, static_cast<std::size_t>(std::max<I64>(ns, 1)));
-    const I64 nh = static_cast<I64>(par::select_indices(ctx_, static_cast<std::size_t>(ns), hs.data(), [=] GDEL_HD(I64 s) {
+    I64 nh = static_cast<I64>(par::select_indices(ctx_, static_cast<std::size_t>(ns), hs.data(), [=] GDEL_HD(I64 s) {
       if (sv.dead(s)) return false;
       for (std::int32_t i = 0; i < sv.count[s]; ++i)
         if (splay::tri_pos(sv.tri[sv.begin[s] + i], inf) >= 0) return true;

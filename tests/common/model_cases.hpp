@@ -1,6 +1,6 @@
 // Real scanned models (CGAL's demo data, fetched by scripts/fetch-models.sh into
 // .deps/models): gFlip3D's output must be a valid triangulation of their convex hull,
-// gDel3D's the exact Delaunay triangulation without flat tets.
+// gDel3D's the exact Delaunay triangulation without flat tets, gStar4D's the same one.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -32,7 +32,15 @@ inline void model_cases(Backend b) {
     Triangulation t = delaunay(pts, o);
     expect_flip_output_valid(pts, t, b);
     o.algorithm = Algorithm::gdel3d;
-    expect_exact_delaunay(pts, delaunay(pts, o), b);
+    o.canonical_order = true;
+    Triangulation d = delaunay(pts, o);
+    expect_exact_delaunay(pts, d, b);
+    // gStar4D: the same triangulation (same symbolic perturbation), by star splaying
+    // itself (no certificate fallback)
+    o.algorithm = Algorithm::gstar4d;
+    Triangulation s = delaunay(pts, o);
+    EXPECT_EQ(s.stats.certificate_fallbacks, 0) << s.stats.to_string();
+    EXPECT_EQ(s.tets, d.tets);
   }
 }
 
