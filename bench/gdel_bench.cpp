@@ -5,7 +5,8 @@
 //   gdel-bench [--dist uniform,gaussian,...] [--n 100000,1000000] [--methods LIST]
 //              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify]
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
-//   methods: gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
+//   methods (gflip3d-* and gdel3d-* also as gflip3d-grid-cuda, gdel3d-grid-cpu, ...: Options::initial = grid):
+//            gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            cgal, cgal-par   (default: all available)
 //   weighted points (regular triangulation): greg3d-cuda, greg3d-cpu, cgal-regular, cgal-regular-par,
 //            with weights scale * h^2 * U(0,1), h the mean spacing of the points' bounding box
@@ -141,6 +142,7 @@ int main(int argc, char** argv) {
           gdel::Options o;
           o.algorithm = star ? gdel::Algorithm::gstar4d : exact ? gdel::Algorithm::gdel3d : gdel::Algorithm::gflip3d;
           o.terminal_flipping = m.find("terminal") != std::string::npos;
+          o.initial = m.find("-grid-") != std::string::npos ? gdel::Initial::grid : gdel::Initial::Default;
           o.reorder_tets = std::getenv("GDEL_TET_REORDER") != nullptr;
           o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
           if (o.backend == gdel::Backend::Cuda && !have_cuda) continue;
@@ -172,6 +174,11 @@ int main(int argc, char** argv) {
             }
           }
           if (dev) r.note = "upload " + std::to_string(upload_s) + " s (not timed); ";
+          if (o.initial == gdel::Initial::grid)
+            r.note += "grid " + std::to_string(t.stats.grid) + "^3, sites " + std::to_string(t.stats.grid_sites) +
+                      (t.stats.grid_fallbacks ? " (NOT USED: fallback)" : "") + "; ";
+          if (star) r.note += "splay rounds " + std::to_string(t.stats.splay_rounds) + ", insertions " +
+                              std::to_string(t.stats.splay_insertions) + "; ";
           r.tets = t.num_tets();
           r.flips = t.stats.flips23 + t.stats.flips32;
           r.failed = star ? t.stats.certificate_fallbacks : exact ? t.stats.repair_failed_vertices : t.stats.failed_vertices;

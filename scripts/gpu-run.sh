@@ -160,6 +160,36 @@ case "$plan" in
       --n 100000,1000000 --methods gdel3d-cpu,cgal --repeat 1
     unset GDEL_PROFILE
     ;;
+  s5tests)  # 2026-11-24: gStar4D with ∞ (all generators, 10^6 incl. grid and sphere, models), the grid start
+    step gstar4d_generators 150 "$tbin/gpu_gstar4d" --gtest_filter='*AllGenerators*'
+    step gstar4d_million 120 "$tbin/gpu_gstar4d" --gtest_filter='*MillionPoints*'
+    step gstar4d_grid_sphere 150 "$tbin/gpu_gstar4d" --gtest_filter='*MillionGrid*:*MillionSphere*'
+    step models 100 "$tbin/gpu_models"
+    step grid_initial 150 "$tbin/gpu_grid"
+    ;;
+  s5million)  # the 10^6 gStar4D tests alone
+    step gstar4d_million 120 "$tbin/gpu_gstar4d" --gtest_filter='*MillionPoints*'
+    step gstar4d_grid_sphere 150 "$tbin/gpu_gstar4d" --gtest_filter='*MillionGrid*:*MillionSphere*'
+    ;;
+  s5bench)  # gStar4D vs gDel3D vs CGAL, every generator at 10^5 and 10^6, same run and points
+    bench s5_e5 100 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 100000 \
+      --methods gstar4d-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1
+    bench s5_e6 300 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 \
+      --methods gstar4d-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1
+    bench s5_skew 60 --dist skew_lines --n 10000 --methods gstar4d-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1
+    ;;
+  s5e7)  # 10^7: gStar4D vs gDel3D vs CGAL parallel and sequential (uniform), gStar4D memory logged
+    nvidia-smi --query-gpu=memory.used --format=csv,noheader -lms 500 >"$out/gpu_mem.txt" 2>&1 &
+    bench s5_e7 300 --dist uniform,gaussian,grid --n 10000000 --methods gstar4d-cuda,gdel3d-cuda,cgal-par --repeat 1
+    bench s5_e7_cgal 150 --dist uniform --n 10000000 --methods cgal --repeat 1
+    kill %1 2>/dev/null
+    ;;
+  s5grid)  # Options::initial = grid against the default start, 10^6 of every generator (skew lines 10^4)
+    bench s5_grid 300 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 \
+      --methods gflip3d-cuda,gflip3d-grid-cuda,gdel3d-cuda,gdel3d-grid-cuda --repeat 1
+    bench s5_grid_skew 60 --dist skew_lines --n 10000 \
+      --methods gflip3d-cuda,gflip3d-grid-cuda,gdel3d-cuda,gdel3d-grid-cuda --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -325,7 +325,7 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
       ctx, m, und.data(), [=] GDEL_HD(std::int64_t q) { return locate(q, nullptr, false); },
       [=] GDEL_HD(std::int64_t q, double* work) { locate(q, work, true); });
   Buffer<vid_t, B> todo(ctx, static_cast<std::size_t>(m));
-  const std::int64_t nu = static_cast<std::int64_t>(
+  std::int64_t nu = static_cast<std::int64_t>(
       par::select_indices(ctx, static_cast<std::size_t>(m), todo.data(), [=] GDEL_HD(vid_t q) { return vt[q] != -1; }));
   todo.resize(static_cast<std::size_t>(nu));
   {

@@ -229,7 +229,7 @@ class StarStage {
       }
     });
     Buffer<U64, B> packed(ctx_, out.size());
-    const std::size_t k = par::copy_if(ctx_, op, packed.data(), out.size(), [=] GDEL_HD(U64 key) { return key != ~U64(0); });
+    std::size_t k = par::copy_if(ctx_, op, packed.data(), out.size(), [=] GDEL_HD(U64 key) { return key != ~U64(0); });
     packed.resize(k);
     out = std::move(packed);
     return nh;

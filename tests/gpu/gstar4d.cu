@@ -10,7 +10,7 @@ static void million(gdel::gen::Distribution d) {
   o.backend = gdel::Backend::Cuda;
   o.algorithm = gdel::Algorithm::gstar4d;
   gdel::Triangulation t = gdel::delaunay(pts, o);
-  std::printf("gstar4d %s 10^6: %.3f s\n%s\n", gdel::gen::to_string(d), t.stats.seconds, t.stats.to_string().c_str());
+  std::printf("gstar4d %s 10^6: %.3f s\n%s\n", std::string(gdel::gen::to_string(d)).c_str(), t.stats.seconds, t.stats.to_string().c_str());
   EXPECT_EQ(t.stats.certificate_fallbacks, 0) << t.stats.to_string();
   t.stats.algorithm = "gdel3d";
   gdel::test::expect_exact_delaunay(pts, t, gdel::Backend::Cuda);
