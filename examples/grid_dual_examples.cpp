@@ -40,8 +40,8 @@ std::string quoted(const std::string& s) { return '"' + s + '"'; }
 std::string same(const std::string& s) { return s; }
 
 std::string figures_json(const Figures& f) {
-  return '{' + join(kFigureFields, [&](const auto& k) { return quoted(k.first) + ": " + std::to_string(f.*k.second); }) +
-         '}';
+  auto field = [&](const auto& k) { return quoted(k.first) + ": " + std::to_string(f.*k.second); };
+  return '{' + join(kFigureFields, field) + '}';
 }
 
 std::string flag_names(std::uint8_t b) {
@@ -71,8 +71,8 @@ std::string example_json(const Example& ex, const Analysis& r) {
   for (std::size_t u = 0; u < r.tets.size(); ++u)
     tets.push_back("{\"sites\": " + ids(r.tets[u]) + ", \"orientation\": " + std::to_string(r.orientation[u]) +
                    ", \"grid_tets\": " + array(r.occurrences[u], [](const GridTet& g) { return ids(g); }) +
-                   ", \"empty_sphere\": " + (r.empty_sphere[u] ? "true" : "false") + ", \"flags\": " + flag_names(r.flags[u]) +
-                   "}");
+                   ", \"empty_sphere\": " + (r.empty_sphere[u] ? "true" : "false") +
+                   ", \"flags\": " + flag_names(r.flags[u]) + "}");
   o << "  \"tets\": [\n    " << join(tets, same, ",\n    ") << "\n  ],\n";
   o << "  \"delaunay_unique\": " << (r.dt_unique ? "true" : "false") << ",\n";
   o << "  \"empty_sphere_tets\": " << array(r.dt, [](const Tet& t) { return ids(t); }) << ",\n";
@@ -95,6 +95,9 @@ int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : ".";
   par::Context<par::Cpu> ctx;
   const std::int64_t cube = cube_triangulations();
+  const std::string kuhn = array(std::array{0, 1, 2, 3, 4, 5}, [](int j) {
+    return array(std::array{0, 1, 2, 3}, [&](int k) { return std::to_string(grid::kuhn_corner(j, k)); });
+  });
   bool drift = false;
   std::vector<std::string> summary;
   std::printf("%-15s", "example");
@@ -105,7 +108,8 @@ int main(int argc, char** argv) {
     const std::string path = dir + "/grid-" + ex.name + ".json";
     std::ofstream(path) << example_json(ex, r);
     std::printf("%-15s", ex.name.c_str());
-    for (const auto& f : kFigureFields) std::printf(" %*lld", int(std::string(f.first).size()), (long long)(r.figures.*f.second));
+    for (const auto& f : kFigureFields)
+      std::printf(" %*lld", int(std::string(f.first).size()), static_cast<long long>(r.figures.*f.second));
     std::printf("\n");
     if (!(r.figures == ex.expect)) {
       std::fprintf(stderr, "%s: figures differ from the documented ones (examples/grid_dual_examples.hpp)\n",
@@ -116,9 +120,8 @@ int main(int argc, char** argv) {
                       ", \"figures\": " + figures_json(r.figures) + "}");
   }
   std::ofstream(dir + "/grid-summary.json")
-      << "{\"cube_triangulations\": " << cube << ",\n \"kuhn_corners\": " << array(std::array{0, 1, 2, 3, 4, 5}, [](int j) {
-           return array(std::array{0, 1, 2, 3}, [&](int k) { return std::to_string(grid::kuhn_corner(j, k)); });
-         }) << ",\n \"examples\": [\n  "
+      << "{\"cube_triangulations\": " << cube << ",\n \"kuhn_corners\": " << kuhn
+      << ",\n \"examples\": [\n  "
       << join(summary, same, ",\n  ") << "\n]}\n";
   std::printf("triangulations of the unit cube's 8 corners: %lld\n", (long long)cube);
   return drift ? 1 : 0;

@@ -172,8 +172,8 @@ inline std::map<Tri, int> facet_counts(const std::vector<Tet>& tets, const std::
 
 // Face-connected pieces of every site's region; `detached` gets the voxels outside the
 // piece that holds the site's own voxel (home[i]: voxel index of site i).
-inline std::vector<int> region_pieces(const std::vector<std::int32_t>& site, int W, const std::vector<std::int64_t>& home,
-                                      std::vector<std::int64_t>& detached) {
+inline std::vector<int> region_pieces(const std::vector<std::int32_t>& site, int W,
+                                      const std::vector<std::int64_t>& home, std::vector<std::int64_t>& detached) {
   std::vector<int> pieces(home.size(), 0);
   std::vector<char> seen(site.size(), 0);
   std::vector<std::int64_t> stack;

@@ -27,7 +27,8 @@ TEST(GridDualExamplesCpu, DocumentedFigures) {
     EXPECT_EQ(tets_with(grid::kDualOverlappingFacet) > 0, r.stats.overlapping_facets > 0);
     EXPECT_EQ(tets_with(grid::kDualNonDelaunayPair) > 0, r.stats.non_delaunay_pairs > 0);
     // the orientation flags agree with the exact orientation computed on the host
-    for (std::size_t u = 0; u < r.tets.size(); ++u) EXPECT_EQ((r.flags[u] & grid::kDualFlat) != 0, r.orientation[u] == 0);
+    for (std::size_t u = 0; u < r.tets.size(); ++u)
+      EXPECT_EQ((r.flags[u] & grid::kDualFlat) != 0, r.orientation[u] == 0);
   }
 }
 
