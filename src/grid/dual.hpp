@@ -11,6 +11,9 @@
 //     X     the sites' coordinates on the backend (3 doubles per id used in `site`)
 //   d.stats   the counts below;  d.hi, d.lo   the distinct site tets, each as its 4 ids
 //             sorted ascending (a<<32|b, c<<32|d), in lexicographic order
+//   d.flags   per distinct site tet (same order), the DualTetFlag bits of its
+//             classification: the counts below, tet by tet (facet kinds on each tet
+//             holding the facet)
 //   d.compare(ref, m)  how many of the m tets `ref` (4 ids each, backend memory, any
 //             vertex order) are dual tets, and how many no grid tet dualizes
 //
@@ -34,8 +37,8 @@
 // then is Delaunay iff non_delaunay_pairs = 0 and its boundary is the convex hull.
 //
 // Memory: 8 bytes per cube (counts), 17 bytes per grid tet (keys + expected sign) plus the
-// sort's index and key copies (16 bytes per grid tet), 40 bytes per facet for the facet
-// pass. Synchronizes (counts come back to the host).
+// sort's index and key copies (16 bytes per grid tet), 41 bytes per facet for the facet
+// pass, 1 byte per site tet (flags). Synchronizes (counts come back to the host).
 #pragma once
 
 #include <chrono>
@@ -57,6 +60,20 @@ struct DualStats {
   I64 open_facets = 0, overshared_facets = 0, overlapping_facets = 0;
   I64 cospherical_pairs = 0, non_delaunay_pairs = 0;
   double seconds = 0;
+};
+
+// Bits of Dual::flags: a site tet that is flat / inverted / folded, or that holds a
+// facet counted as open / overshared / overlapping, or a facet of a cospherical /
+// non-Delaunay pair (see the counts above).
+enum DualTetFlag : std::uint8_t {
+  kDualFlat = 1,
+  kDualInverted = 2,
+  kDualFolded = 4,
+  kDualOpenFacet = 8,
+  kDualOversharedFacet = 16,
+  kDualOverlappingFacet = 32,
+  kDualCosphericalPair = 64,
+  kDualNonDelaunayPair = 128,
 };
 
 namespace dual_detail {
@@ -110,9 +127,10 @@ par::Buffer<I64, B> lex_order(par::Context<B>& ctx, const U64* hi, const U64* lo
 
 template <class B>
 struct Dual {
-  explicit Dual(par::Context<B>& c) : ctx(&c), hi(c), lo(c) {}
+  explicit Dual(par::Context<B>& c) : ctx(&c), hi(c), lo(c), flags(c) {}
   par::Context<B>* ctx;
   par::Buffer<U64, B> hi, lo;  // distinct site tets, sorted ids packed, lexicographic order
+  par::Buffer<std::uint8_t, B> flags;  // DualTetFlag bits per distinct site tet
   DualStats stats;
 
   // Of the m tets `ref` (4 ids each, backend memory): how many are dual tets (returned),
@@ -207,8 +225,10 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   st.tets = U;
   out.hi.resize(static_cast<std::size_t>(U));
   out.lo.resize(static_cast<std::size_t>(U));
+  out.flags.resize(static_cast<std::size_t>(U));
   U64* uh = out.hi.data();
   U64* ul = out.lo.data();
+  std::uint8_t* tf = out.flags.data();
   par::Buffer<std::int8_t, B> expect(ctx, static_cast<std::size_t>(U));  // bit 0: +1 seen, bit 1: −1 seen
   std::int8_t* ex = expect.data();
   par::parallel_for(ctx, U, [=] GDEL_HD(I64 u) {
@@ -246,6 +266,8 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
       fp[u] = s == 0;
       fp[U + u] = (s > 0 && (ex[u] & 2)) || (s < 0 && (ex[u] & 1));
       fp[2 * U + u] = ex[u] == 3;
+      tf[u] = static_cast<std::uint8_t>((fp[u] ? kDualFlat : 0) | (fp[U + u] ? kDualInverted : 0) |
+                                        (fp[2 * U + u] ? kDualFolded : 0));
     });
     st.flat = par::reduce_sum(ctx, fp, static_cast<std::size_t>(U));
     st.inverted = par::reduce_sum(ctx, fp + U, static_cast<std::size_t>(U));
@@ -356,6 +378,24 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
     st.overlapping_facets = par::reduce_sum(ctx, fp + 2 * NF, nf);
     st.cospherical_pairs = par::reduce_sum(ctx, fp + 3 * NF, nf);
     st.non_delaunay_pairs = par::reduce_sum(ctx, fp + 4 * NF, nf);
+  }
+  // 5. the facet kinds tet by tet: each facet slot of a non-flat tet lies in one run
+  {
+    par::Buffer<std::uint8_t, B> fb(ctx, static_cast<std::size_t>(F));
+    std::uint8_t* fbp = fb.data();
+    par::fill(ctx, fbp, static_cast<std::size_t>(F), std::uint8_t(0));
+    par::parallel_for(ctx, NF, [=] GDEL_HD(I64 j) {
+      const std::uint8_t bit = kp[j] == 0   ? kDualOpenFacet
+                               : kp[j] == 2 ? kDualOversharedFacet
+                               : kp[j] == 3 ? kDualOverlappingFacet
+                               : ip[j] == 0 ? kDualCosphericalPair
+                               : ip[j] > 0  ? kDualNonDelaunayPair
+                                            : 0;
+      for (I64 r = fhd[j]; r < fe[j]; ++r) fbp[fo[r]] = bit;
+    });
+    par::parallel_for(ctx, U, [=] GDEL_HD(I64 u) {
+      tf[u] = static_cast<std::uint8_t>(tf[u] | fbp[4 * u] | fbp[4 * u + 1] | fbp[4 * u + 2] | fbp[4 * u + 3]);
+    });
   }
   ctx.synchronize();
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
