@@ -6,6 +6,7 @@
 //              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify]
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
 //   methods: gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
+//            (a method name containing "nonopt", e.g. gflip3d-nonopt-cpu: with Options::nonoptimal_flips)
 //            cgal, cgal-par   (default: all available)
 //   weighted points (regular triangulation): greg3d-cuda, greg3d-cpu, cgal-regular, cgal-regular-par,
 //            with weights scale * h^2 * U(0,1), h the mean spacing of the points' bounding box
@@ -141,6 +142,7 @@ int main(int argc, char** argv) {
           gdel::Options o;
           o.algorithm = star ? gdel::Algorithm::gstar4d : exact ? gdel::Algorithm::gdel3d : gdel::Algorithm::gflip3d;
           o.terminal_flipping = m.find("terminal") != std::string::npos;
+          o.nonoptimal_flips = m.find("nonopt") != std::string::npos;
           o.reorder_tets = std::getenv("GDEL_TET_REORDER") != nullptr;
           o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
           if (o.backend == gdel::Backend::Cuda && !have_cuda) continue;
