@@ -251,7 +251,8 @@ GDEL_HD std::int64_t edge_removal_ear(const Geo& g, const MeshView& m, tid_t b, 
 template <bool Exact>
 GDEL_HD std::int64_t propose_nonoptimal(const Geo& g, const MeshView& m, tid_t b, double* work) {
   constexpr std::int64_t kNormal = -3;  // a face has a normal flip
-  const std::int64_t r = for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
+  // (not const: nvcc 13 crashes on a const local whose initializer holds a lambda)
+  std::int64_t r = for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
     const int p = face_flip<Exact>(g, bv, apex, i, work);
     if (p != -1) return p == kUndecidedResult ? std::int64_t(kUndecidedResult) : kNormal;
     const int bl = flip23_blockers<Exact>(g, bv, i, apex[i], true, work);
