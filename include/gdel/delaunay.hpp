@@ -47,6 +47,13 @@ struct Options {
   // gFlip3D's terminal variant ("InsAll"): insert every point by splitting, flip once
   // at the end. For comparison only: it leaves many more non-Delaunay facets.
   bool terminal_flipping = false;
+  // gFlip3D (and so gDel3D): non-optimal flipping (docs/gflip3d.md). Once flipping is
+  // stuck at the end, a facet that is not locally Delaunay but cannot be flipped (its
+  // reflex edge has degree > 3) gets valid, non-improving 2-3 flips around that edge
+  // until the edge has degree 3 and its 3-2 flip may remove the facet; normal flipping
+  // then resumes. Capped rounds; the triangulation with the fewest non-locally-Delaunay
+  // facets seen is kept. Off by default: an experiment (measured in docs/gflip3d.md).
+  bool nonoptimal_flips = false;
   // gFlip3D: re-order tets by smallest vertex id every second insertion round, for
   // memory locality (measured without gain on an H200 at 10^6..10^7 points; a study knob).
   bool reorder_tets = false;
@@ -86,6 +93,10 @@ struct Stats {
   std::int64_t flips23 = 0, flips32 = 0;
   std::int64_t exact_evaluations = 0;  // items decided by the exact (non-filter) pass
   std::int64_t failed_vertices = 0;    // vertices of facets left not locally Delaunay (in the output)
+  // Options::nonoptimal_flips: rounds run, non-improving flips made (all rounds, kept or
+  // not), and the facets (∞'s included) not locally Delaunay when flipping first got
+  // stuck and in the triangulation kept (fewest seen); all 0 without the option
+  std::int64_t nonoptimal_rounds = 0, nonoptimal_flips = 0, nonld_facets_stuck = 0, nonld_facets_kept = 0;
   // gdel3d repair: vertices gFlip3D left failing (their stars are rebuilt), stars pulled
   // from the triangulation on demand, splaying rounds, star insertions attempted, flat
   // tets (exact zero volume, on coplanar hull faces) dropped from the output

@@ -30,6 +30,9 @@ std::string Stats::to_string() const {
   s << "  rounds " << rounds << ", flip iterations " << flip_iterations << ", flips 2-3 " << flips23 << ", 3-2 "
     << flips32 << ", exact evaluations " << exact_evaluations << ", failed vertices " << failed_vertices
     << ", peak memory " << peak_bytes / (1024.0 * 1024.0) << " MiB";
+  if (nonoptimal_rounds > 0)
+    s << "\n  non-optimal flipping: rounds " << nonoptimal_rounds << ", non-improving flips " << nonoptimal_flips
+      << ", non-LD facets " << nonld_facets_stuck << " when stuck -> " << nonld_facets_kept << " kept";
   if (algorithm == "gstar4d" || algorithm == "greg3d")
     s << "\n  " << algorithm << ": grid " << grid << "^3, working-set pairs " << working_set_pairs << ", stars "
       << stars_built << ", splay rounds " << splay_rounds << ", insertions " << splay_insertions

@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
 
   // delaunay ------------------------------------------------------------------------------
   std::string in, out, algorithm = "auto", device = "auto", example, initial = "default";
-  bool check = false, stats = false, terminal = false;
+  bool check = false, stats = false, terminal = false, nonoptimal = false;
   std::uint64_t seed = 1;
   auto* del = app.add_subcommand("delaunay", "triangulate points and write the mesh");
   del->add_option("input", in, "points file: .xyz .txt .off .ply .node .npy");
@@ -130,6 +130,9 @@ int main(int argc, char** argv) {
   del->add_option("--seed", seed, "seed for --example")->capture_default_str();
   del->add_flag("--check", check, "verify the result exactly before writing it; exit 5 (and write nothing) if it fails");
   del->add_flag("--terminal-flipping", terminal, "gFlip3D's insert-all-then-flip variant (for study)");
+  del->add_flag("--nonoptimal-flips", nonoptimal,
+                "gFlip3D: once flipping is stuck, non-improving flips that unlock stuck facets, keeping the "
+                "triangulation with the fewest non-locally-Delaunay facets (experimental; docs/gflip3d.md)");
   del->add_option("--initial", initial,
                   "what gFlip3D/gDel3D start from: default (one tetrahedron) | grid (the Delaunay triangulation of "
                   "a coarse grid's sample, from the dual of its digital Voronoi diagram; docs/grid.md)")
@@ -239,6 +242,7 @@ int main(int argc, char** argv) {
       o.algorithm = parse_algorithm(algorithm);
       o.backend = parse_backend(device);
       o.terminal_flipping = terminal;
+      o.nonoptimal_flips = nonoptimal;
       o.initial = initial == "grid" ? gdel::Initial::grid : gdel::Initial::Default;
       const gdel::Backend backend = gdel::resolve_backend(o.backend);  // BackendUnavailable: exit 4, before reading
 

@@ -78,8 +78,50 @@ GDEL_HD inline vid_t apex_of(const MeshView& m, fid_t o) {
   return o < 0 ? kNoVertex : m.tet[facet_tet(o)].v[facet_face(o)];
 }
 
+// The edges of face i of tet bv that block its 2-3 flip with apex x across the face:
+// bit k stands for the edge from corner face_vertex(i, k) to face_vertex(i, k+1) when
+// the new tet (that edge, x, bv[i]) is not positive, i.e. the segment from bv[i] to x
+// does not cross the face inside that edge. 0: the 2-3 flip is valid. Stops at the first
+// blocking edge unless all_edges; kUndecidedResult when a test is undecided.
 template <bool Exact>
-GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, double* work) {
+GDEL_HD int flip23_blockers(const Geo& g, const vid_t* bv, int i, vid_t x, bool all_edges, double* work) {
+  int mask = 0;
+  for (int k = 0; k < 3 && (all_edges || mask == 0); ++k) {
+    int sk = g.orient<Exact>(bv[face_vertex(i, k)], bv[face_vertex(i, (k + 1) % 3)], x, bv[i], work);
+    if (sk == par::kUndecided) return kUndecidedResult;
+    if (sk <= 0) mask |= 1 << k;
+  }
+  return mask;
+}
+
+// Non-locally-Delaunay face i of tet bv (apex[] = the apexes across bv's faces): its
+// flip proposal, -1 when neither flip is valid (stuck), or kUndecidedResult.
+template <bool Exact>
+GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, double* work) {
+  const vid_t x = apex[i];
+  // 3-2: the edge of face i opposite corner k has degree 3 iff face k's apex is x.
+  for (int k = 0; k < 4; ++k) {
+    if (k == i || apex[k] != x) continue;
+    vid_t e[2];
+    int ne = 0;
+    for (int l = 0; l < 4; ++l)
+      if (l != i && l != k) e[ne++] = bv[l];
+    int s0 = g.orient<Exact>(bv[i], bv[k], x, e[0], work);
+    int s1 = g.orient<Exact>(bv[i], bv[k], x, e[1], work);
+    if (s0 == par::kUndecided || s1 == par::kUndecided) return kUndecidedResult;
+    if (s0 != s1) return (2 << 4) | (i << 2) | k;
+  }
+  // 2-3: the segment from bv[i] to x crosses face i iff the three new tets are positive.
+  const int bl = flip23_blockers<Exact>(g, bv, i, x, false, work);
+  if (bl == kUndecidedResult) return kUndecidedResult;
+  return bl == 0 ? (1 << 4) | (i << 2) : -1;
+}
+
+// Calls f(bv, apex, i) for the faces i of tet b (vertices bv, apex[] across its faces)
+// that have a neighbour, are not internal and are not locally Delaunay, in order, until
+// f returns something other than -1; returns that value, -1, or kUndecidedResult.
+template <bool Exact, class F>
+GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, double* work, F f) {
   if (!m.alive(b)) return -1;
   const Tet bt = m.tet[b];
   const vid_t* bv = bt.v;
@@ -90,30 +132,140 @@ GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, double* work)
     int s = g.insphere<Exact>(bv, apex[i], work);
     if (s == par::kUndecided) return kUndecidedResult;
     if (s <= 0) continue;  // locally Delaunay
-    const vid_t x = apex[i];
-    // 3-2: the edge of face i opposite corner k has degree 3 iff face k's apex is x.
-    for (int k = 0; k < 4; ++k) {
-      if (k == i || apex[k] != x) continue;
-      vid_t e[2];
-      int ne = 0;
-      for (int l = 0; l < 4; ++l)
-        if (l != i && l != k) e[ne++] = bv[l];
-      int s0 = g.orient<Exact>(bv[i], bv[k], x, e[0], work);
-      int s1 = g.orient<Exact>(bv[i], bv[k], x, e[1], work);
-      if (s0 == par::kUndecided || s1 == par::kUndecided) return kUndecidedResult;
-      if (s0 != s1) return (2 << 4) | (i << 2) | k;
-    }
-    // 2-3: the segment from bv[i] to x crosses face i iff the three new tets are positive.
-    bool ok = true;
-    for (int k = 0; k < 3 && ok; ++k) {
-      int sk = g.orient<Exact>(bv[face_vertex(i, k)], bv[face_vertex(i, (k + 1) % 3)], x, bv[i], work);
-      if (sk == par::kUndecided) return kUndecidedResult;
-      ok = sk > 0;
-    }
-    if (ok) return (1 << 4) | (i << 2);
-    // not flippable now: try the other faces
+    const std::int64_t r = f(bv, apex, i);
+    if (r != -1) return r;
   }
   return -1;
+}
+
+// The flip tet b proposes: that of its first face with a valid flip (faces that are not
+// flippable now are skipped), -1, or kUndecidedResult.
+template <bool Exact>
+GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, double* work) {
+  return static_cast<int>(for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
+    return std::int64_t(face_flip<Exact>(g, bv, apex, i, work));
+  }));
+}
+
+// ---------------------------------------------------------------------------
+// Non-optimal flips (Options::nonoptimal_flips, docs/gflip3d.md): edge removal by ear
+// cutting. A stuck facet F = (p, q, c) of tet B = (p, q, c, v) with apex x, whose 2-3
+// flip is blocked by its edge e = pq and whose 3-2 flip is not available (e has degree
+// d > 3). Seen along e, the tets around e form a ring: B, then (p, q, v, L2), ...,
+// (p, q, L_{d-2}, x), and T = (p, q, x, c); ring vertices L = (c, v, L2, ..., x). A 2-3
+// flip of a facet (p, q, L_j), 2 <= j <= d-2, between the ring's tets (p, q, L_{j-1},
+// L_j) and (p, q, L_j, L_{j+1}), cuts the "ear" L_{j-1} L_j L_{j+1} off the ring: its
+// new tets are that triangle coned to p and to q, and (p, q, L_{j-1}, L_{j+1}); e's
+// degree drops by one, B and T stay. It is valid when its three new tets are positive
+// (exact), and usually not improving (the facet is locally Delaunay). After d - 3 ear
+// cuts the ring is (c, v, x) and the normal 3-2 flip of e removes e and F with it.
+// An ear is proposed only when the whole removal is possible: the ring is simulated,
+// cutting the first valid ear each time (exact tests on the ring's virtual tets), down
+// to (c, v, x), whose 3-2 flip must be valid too; so no flip is made towards a removal
+// that would stop half-way. Re-simulated at every step on the current ring, the same
+// plan continues. Ears with ∞ as an apex are never cut (they would carve a tet out of
+// the hull).
+// ---------------------------------------------------------------------------
+inline constexpr int kMaxRing = 16;  // rings of higher degree are left alone
+
+// A packed non-optimal proposal: the tet that carries it and its code (as propose_flip's).
+GDEL_HD inline std::int64_t pack_proposal(tid_t t, int code) { return (std::int64_t(t) << 8) | code; }
+GDEL_HD inline tid_t proposal_tet(std::int64_t p) { return static_cast<tid_t>(p >> 8); }
+GDEL_HD inline int proposal_code(std::int64_t p) { return static_cast<int>(p & 0xff); }
+
+// Tet b's vertices (p, q, c, v) in this order are positively oriented (an even
+// permutation of b's).
+GDEL_HD inline bool same_orientation(const vid_t* bv, vid_t p, vid_t q, vid_t c, vid_t v) {
+  const vid_t want[4] = {p, q, c, v};
+  int pos[4] = {0, 0, 0, 0};
+  for (int a = 0; a < 4; ++a)
+    for (int l = 0; l < 4; ++l)
+      if (bv[l] == want[a]) pos[a] = l;
+  int inv = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int z = a + 1; z < 4; ++z) inv += pos[a] > pos[z];
+  return (inv & 1) == 0;
+}
+
+// The first ear cut of the removal of edge (p, q) of tet b (see above; c: b's third
+// vertex of F, x: F's apex), as a packed proposal; -1 when the removal is not possible;
+// kUndecidedResult.
+template <bool Exact>
+GDEL_HD std::int64_t edge_removal_ear(const Geo& g, const MeshView& m, tid_t b, vid_t p, vid_t q, vid_t c,
+                                      vid_t x, double* work) {
+  vid_t L[kMaxRing];
+  tid_t lt[kMaxRing];  // lt[j]: the ring's tet (p, q, L[j], L[j+1]); li[j]: its face opposite L[j]
+  int li[kMaxRing];
+  int n = 0;
+  L[n++] = c;
+  tid_t cur = b;
+  for (;;) {
+    const Tet ct = m.tet[cur];
+    int iu = -1;
+    vid_t w = kNoVertex;
+    for (int l = 0; l < 4; ++l) {
+      const vid_t z = ct.v[l];
+      if (z == L[n - 1]) iu = l;
+      else if (z != p && z != q) w = z;
+    }
+    if (iu < 0 || n == kMaxRing) return -1;
+    lt[n - 1] = cur;
+    li[n - 1] = iu;
+    L[n++] = w;
+    if (w == x) break;
+    const fid_t o = m.opp[4 * std::int64_t(cur) + iu];
+    if (o < 0) return -1;
+    cur = facet_tet(o);
+  }
+  if (n <= 3) return -1;
+  const vid_t* bv = m.tet[b].v;
+  const bool pq = same_orientation(bv, p, q, c, L[1]);  // (p, q, L[j], L[j+1]) positive
+  int idx[kMaxRing];
+  for (int j = 0; j < n; ++j) idx[j] = j;
+  std::int64_t first = -1;
+  for (int k = n; k > 3; --k) {  // k ring vertices left: cut one ear among idx[2 .. k-2]
+    int cut = -1;
+    for (int j = 2; j + 1 < k && cut < 0; ++j) {
+      const vid_t a = L[idx[j - 1]], r = L[idx[j]], y = L[idx[j + 1]];
+      if (a == g.inf || y == g.inf) continue;
+      const vid_t V[4] = {pq ? p : q, pq ? q : p, a, r};
+      const int bl = flip23_blockers<Exact>(g, V, 2, y, false, work);
+      if (bl == kUndecidedResult) return kUndecidedResult;
+      if (bl == 0) cut = j;
+    }
+    if (cut < 0) return -1;
+    if (k == n) first = pack_proposal(lt[cut - 1], (1 << 4) | (li[cut - 1] << 2));
+    for (int j = cut; j + 1 < k; ++j) idx[j] = idx[j + 1];
+  }
+  // the last 3-2 flip: e crosses the triangle (c, v, x)
+  const int s0 = g.orient<Exact>(L[1], c, x, p, work);
+  const int s1 = g.orient<Exact>(L[1], c, x, q, work);
+  if (s0 == par::kUndecided || s1 == par::kUndecided) return kUndecidedResult;
+  return s0 != s1 ? first : -1;
+}
+
+// Non-optimal proposal of tet b: for its first non-internal face that is not locally
+// Delaunay and stuck, the next ear cut of the removal of one of the face's blocking edges.
+// Returns a packed proposal, -1 (none, also when some face is normally flippable: the
+// normal flip loop goes first), or kUndecidedResult.
+template <bool Exact>
+GDEL_HD std::int64_t propose_nonoptimal(const Geo& g, const MeshView& m, tid_t b, double* work) {
+  constexpr std::int64_t kNormal = -3;  // a face has a normal flip
+  // (not const: nvcc 13 crashes on a const local whose initializer holds a lambda)
+  std::int64_t r = for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
+    const int p = face_flip<Exact>(g, bv, apex, i, work);
+    if (p != -1) return p == kUndecidedResult ? std::int64_t(kUndecidedResult) : kNormal;
+    const int bl = flip23_blockers<Exact>(g, bv, i, apex[i], true, work);
+    if (bl == kUndecidedResult) return std::int64_t(kUndecidedResult);
+    for (int k = 0; k < 3; ++k) {
+      if (!(bl & (1 << k))) continue;
+      const std::int64_t e = edge_removal_ear<Exact>(g, m, b, bv[face_vertex(i, k)], bv[face_vertex(i, (k + 1) % 3)],
+                                                     bv[face_vertex(i, (k + 2) % 3)], apex[i], work);
+      if (e != -1) return e;  // a flip, or undecided
+    }
+    return std::int64_t(-1);
+  });
+  return r == kNormal ? -1 : r;
 }
 
 // Tets touched by a proposal (2 or 3); returns the count.

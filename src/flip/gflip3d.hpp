@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "flip/flip_kernels.hpp"
+#include "flip/local_delaunay.hpp"
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "parallel/exact_batch.hpp"
@@ -35,6 +36,12 @@ struct FlipConfig {
   // curve-sorted points this restores spatial locality in memory (Options::reorder_tets;
   // off by default: no gain measured on an H200, see bench/RESULTS.md).
   bool reorder_tets = false;
+  // Non-optimal flipping once flipping is stuck at the end (Options::nonoptimal_flips):
+  // at most nonoptimal_rounds rounds, each of at most nonoptimal_steps parallel steps of
+  // non-improving flips followed by a normal flip loop.
+  bool nonoptimal = false;
+  int nonoptimal_rounds = 16;
+  int nonoptimal_steps = 8;
 };
 
 // The fast/exact split of the parallel layer with the predicates' scratch size.
@@ -114,6 +121,12 @@ class GFlip3D {
       auto tf = std::chrono::steady_clock::now();
       flip_loop(/*all_tets=*/true, /*with_log=*/false);
       st_.stages.push_back({"final flipping of all tets", since(tf)});
+    }
+    if (cfg_.nonoptimal) {
+      auto tn = std::chrono::steady_clock::now();
+      nonoptimal_flipping();
+      check_mesh("after non-optimal flipping");
+      st_.stages.push_back({"non-optimal flipping", since(tn)});
     }
   }
 
@@ -559,7 +572,6 @@ class GFlip3D {
       const std::int64_t na = static_cast<std::int64_t>(active_.size());
       if (na == 0) break;
       if (!flip_iteration(na, with_log)) break;
-      st_.flip_iterations++;
       check_mesh("after flip iteration");
     }
   }
@@ -581,13 +593,24 @@ class GFlip3D {
         },
         [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_flip<true>(g, m, A[k], work); });
     par::mark(ctx_, "flip: propose");
+    return commit_flips(A, na, pp, with_log) > 0;
+  }
+
+  // Executes proposals: pp[k] (propose_flip's code, < 0: none) is the flip proposed by
+  // tet A[k] (distinct tets). Votes so that the accepted flips touch disjoint tets (the
+  // smallest proposer wins each tet), executes them, repairs adjacency, and makes the
+  // rejected proposers and the new tets the active set. Returns the number of flips;
+  // 0 (nothing changed) when there was no proposal.
+  std::int64_t commit_flips(const tid_t* A, std::int64_t na, const std::int32_t* pp, bool with_log) {
+    MeshView m = mesh_.view();
+    const Geo g = geo();
     // proposers
     Buffer<std::int64_t, B> pl(ctx_, static_cast<std::size_t>(na));
     std::int64_t* plp = pl.data();
     std::int64_t np = static_cast<std::int64_t>(par::select_indices(
         ctx_, static_cast<std::size_t>(na), plp, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
     par::mark(ctx_, "flip: select proposers");
-    if (np == 0) return false;
+    if (np == 0) return 0;
     // vote: the smallest proposer index wins each tet; accepted flips are disjoint
     std::int32_t* vote = aux_vote_.data();
     par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
@@ -644,9 +667,11 @@ class GFlip3D {
       std::sort(v.begin(), v.end());
       auto dup = std::adjacent_find(v.begin(), v.end());
       if (dup != v.end()) {
-        auto Ah = active_.to_host();
+        std::vector<tid_t> Ah(static_cast<std::size_t>(na));
+        std::vector<std::int32_t> pph(static_cast<std::size_t>(na));
+        par::detail::Memory<B>::to_host(ctx_, Ah.data(), A, Ah.size() * sizeof(tid_t));
+        par::detail::Memory<B>::to_host(ctx_, pph.data(), pp, pph.size() * sizeof(std::int32_t));
         auto flh = fl.to_host();
-        auto pph = prop.to_host();
         std::string msg = "gflip3d debug: accepted flips overlap on tet " + std::to_string(*dup) + ":";
         for (std::size_t f = 0; f < h.size() / 3; ++f)
           if (h[3 * f] == *dup || h[3 * f + 1] == *dup || h[3 * f + 2] == *dup)
@@ -783,7 +808,163 @@ class GFlip3D {
     par::mark(ctx_, "flip: next active set");
     if (with_log) log_iters_.push_back(static_cast<std::int64_t>(log_.size()));
     else log_.clear();
-    return true;
+    st_.flip_iterations++;  // also the stamp (aux_mark_) of the next iteration's flips
+    return nfl;
+  }
+
+  // --- non-optimal flipping (Options::nonoptimal_flips; docs/gflip3d.md) -----------------
+  // After the last flip loop, on the stuck triangulation. Each round: find the facets
+  // that are not locally Delaunay (exact, all tets); let the tets on their sides propose
+  // the ear cuts that remove the stuck facets' blocking edges (propose_nonoptimal,
+  // flip_kernels.hpp), a few parallel steps of them; then normal flipping from those
+  // tets, first trusting the ear cuts' internal faces (so that their own 3-2 undo is
+  // not proposed before the 3-2 that removes the edge), then checking them too. The
+  // state with the fewest non-locally-Delaunay facets is kept; rounds stop when one makes
+  // no flip, after `patience` rounds without a new best, or at the cap.
+  void nonoptimal_flipping() {
+    constexpr int patience = 3;
+    Buffer<tid_t, B> stuck(ctx_);
+    std::int64_t cnt = non_ld_facets(stuck);
+    st_.nonld_facets_stuck = cnt;
+    std::int64_t best = cnt;
+    mesh::TetMesh<B> kept(ctx_);
+    bool saved = false;  // `kept` holds a state with `best` facets
+    int stale = 0;
+    for (int r = 0; r < cfg_.nonoptimal_rounds && cnt > 0; ++r) {
+      if (cnt == best && !saved) {
+        kept.copy_from(mesh_);
+        saved = true;
+      }
+      st_.nonoptimal_rounds++;
+      if (nonoptimal_round(stuck) == 0) break;  // nothing unlockable: unchanged
+      cnt = non_ld_facets(stuck);
+      if (cnt < best) {
+        best = cnt;
+        saved = false;
+        stale = 0;
+      } else if (++stale >= patience) {
+        break;
+      }
+    }
+    if (cnt > best) {
+      mesh_.copy_from(kept);
+      grow_aux();
+    }
+    st_.nonld_facets_kept = best;
+    active_.resize(0);
+  }
+
+  // Facets not locally Delaunay (Geo::orient4, as the failed vertices): their number,
+  // and in `sides` the tets on either side of them (sorted, no repeats).
+  std::int64_t non_ld_facets(Buffer<tid_t, B>& sides) {
+    const std::int64_t nt = mesh_.size();
+    const MeshView m = mesh_.view();
+    Buffer<std::int8_t, B> sg(ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(nt, 1)));
+    const std::int8_t* sp = sg.data();
+    st_.exact_evaluations += facet_signs(ctx_, m, nt, geo(), sg.data());
+    Buffer<std::int64_t, B> fl(ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(nt, 1)));
+    std::int64_t* fp = fl.data();
+    // (not const: see commit_flips' note on nvcc)
+    std::int64_t k = static_cast<std::int64_t>(par::select_indices(
+        ctx_, static_cast<std::size_t>(4 * nt), fp, [=] GDEL_HD(std::int64_t f) { return sp[f] > 0; }));
+    sides.resize(static_cast<std::size_t>(2 * k));
+    tid_t* s = sides.data();
+    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t j) {
+      s[2 * j] = static_cast<tid_t>(fp[j] >> 2);
+      s[2 * j + 1] = facet_tet(m.opp[fp[j]]);
+    });
+    set_of(sides);
+    return k;
+  }
+
+  // The alive tets of `t`, sorted, without repeats.
+  void set_of(Buffer<tid_t, B>& t) {
+    tid_t* tp = t.data();
+    par::sort_keys(ctx_, tp, t.size());
+    const std::size_t nu = par::unique(ctx_, tp, t.size());
+    const std::uint8_t* stp = mesh_.state().data();
+    Buffer<tid_t, B> out(ctx_, std::max<std::size_t>(nu, 1));
+    std::size_t na = par::copy_if(ctx_, tp, out.data(), nu, [=] GDEL_HD(tid_t x) { return (stp[x] & mesh::kAlive) != 0; });
+    out.resize(na);
+    t = std::move(out);
+  }
+  void append(Buffer<tid_t, B>& dst, const Buffer<tid_t, B>& src) {
+    const std::size_t a = dst.size();
+    dst.resize(a + src.size());
+    par::detail::Memory<B>::copy(ctx_, dst.data() + a, src.data(), src.size() * sizeof(tid_t));
+  }
+
+  // One round from the tets beside the stuck facets; returns the non-optimal flips made.
+  std::int64_t nonoptimal_round(const Buffer<tid_t, B>& stuck) {
+    Buffer<tid_t, B> touched(ctx_);
+    std::int64_t made = 0;
+    for (int step = 0; step < cfg_.nonoptimal_steps; ++step) {
+      const std::int64_t f = nonoptimal_step(stuck);
+      if (f == 0) break;
+      made += f;
+      append(touched, active_);  // the new tets (and rejected proposers)
+    }
+    st_.nonoptimal_flips += made;
+    if (made == 0) return 0;
+    // normal flipping, the non-optimal flips' internal faces still trusted
+    active_.resize(0);
+    append(active_, stuck);
+    append(active_, touched);
+    set_of(active_);
+    flip_loop(/*all_tets=*/false, /*with_log=*/false);
+    // then those faces checked as well
+    set_of(touched);
+    MeshView m = mesh_.view();
+    const tid_t* tp = touched.data();
+    par::parallel_for(ctx_, static_cast<std::int64_t>(touched.size()), [=] GDEL_HD(std::int64_t j) {
+      for (int i = 0; i < 4; ++i) m.set_face_flags(tp[j], i, 0);
+    });
+    active_ = std::move(touched);
+    flip_loop(/*all_tets=*/false, /*with_log=*/false);
+    return made;
+  }
+
+  // One parallel step of non-optimal flips proposed by the tets `from`: at most one per
+  // proposer, at most one per tet that carries it (the earliest proposer), then voted and
+  // executed like any flips. Returns the flips made.
+  std::int64_t nonoptimal_step(const Buffer<tid_t, B>& from) {
+    const std::int64_t n = static_cast<std::int64_t>(from.size());
+    if (n == 0) return 0;
+    const MeshView m = mesh_.view();
+    const Geo g = geo();
+    const tid_t* F = from.data();
+    Buffer<std::int64_t, B> prop(ctx_, static_cast<std::size_t>(n));
+    std::int64_t* pp = prop.data();
+    Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(n));
+    st_.exact_evaluations += fast_then_exact(
+        ctx_, n, und.data(),
+        [=] GDEL_HD(std::int64_t k) {
+          pp[k] = propose_nonoptimal<false>(g, m, F[k], nullptr);
+          return pp[k] != kUndecidedResult;
+        },
+        [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_nonoptimal<true>(g, m, F[k], work); });
+    Buffer<std::int64_t, B> sel(ctx_, static_cast<std::size_t>(n));
+    std::int64_t* sl = sel.data();
+    std::int64_t ns = static_cast<std::int64_t>(  // (not const: nvcc, as above)
+        par::select_indices(ctx_, static_cast<std::size_t>(n), sl, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
+    if (ns == 0) return 0;
+    // one proposal per carrying tet: the smallest position wins (vote array, reset after)
+    std::int32_t* vote = aux_vote_.data();
+    par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) {
+      par::atomic_min(vote + proposal_tet(pp[sl[j]]), static_cast<std::int32_t>(j));
+    });
+    Buffer<tid_t, B> A(ctx_, static_cast<std::size_t>(ns));
+    Buffer<std::int32_t, B> code(ctx_, static_cast<std::size_t>(ns));
+    tid_t* ap = A.data();
+    std::int32_t* cp = code.data();
+    par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) {
+      const tid_t t = proposal_tet(pp[sl[j]]);
+      ap[j] = t;
+      cp[j] = vote[t] == static_cast<std::int32_t>(j) ? proposal_code(pp[sl[j]]) : -1;
+    });
+    par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) { vote[ap[j]] = INT_MAX; });
+    par::mark(ctx_, "non-optimal flips: propose");
+    return commit_flips(ap, ns, cp, /*with_log=*/false);
   }
 
   // --- periodic re-ordering of tets ---------------------------------------------------

@@ -127,6 +127,26 @@ class TetMesh {
     free_count_ += k;
   }
 
+  // Makes this mesh a copy of o (same context): slots [0, o.size()), the free stack and
+  // the high-water mark; this mesh's slots past o.size() become dead. Used to keep a
+  // state to return to; copies only the used part, so a copy costs what the mesh holds.
+  void copy_from(TetMesh& o) {
+    using M = par::detail::Memory<B>;
+    const std::int64_t n = o.size_;
+    reserve(n);
+    M::copy(*ctx_, tet_.data(), o.tet_.data(), static_cast<std::size_t>(n) * sizeof(Tet));
+    M::copy(*ctx_, opp_.data(), o.opp_.data(), static_cast<std::size_t>(4 * n) * sizeof(fid_t));
+    M::copy(*ctx_, state_.data(), o.state_.data(), static_cast<std::size_t>(n));
+    M::copy(*ctx_, fflag_.data(), o.fflag_.data(), static_cast<std::size_t>(4 * n));
+    M::copy(*ctx_, free_.data(), o.free_.data(), static_cast<std::size_t>(o.free_count_) * sizeof(tid_t));
+    if (size_ > n) {
+      std::uint8_t* st = state_.data();
+      par::parallel_for(*ctx_, size_ - n, [=] GDEL_HD(std::int64_t k) { st[n + k] = 0; });
+    }
+    size_ = n;
+    free_count_ = o.free_count_;
+  }
+
   MeshView view() {
     return MeshView{tet_.data(), opp_.data(), state_.data(), fflag_.data()};
   }

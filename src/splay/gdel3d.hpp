@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "flip/flip_kernels.hpp"
+#include "flip/local_delaunay.hpp"
 #include "mesh/tet_mesh.hpp"
 #include "splay/splayer.hpp"
 
@@ -49,28 +50,7 @@ class GDel3D {
     Buffer<std::int8_t, B> sgn(ctx, static_cast<std::size_t>(4 * std::max<I64>(nt, 1)));
     std::int8_t* sg = sgn.data();
     const vid_t inf = g.inf;
-    auto tuple = [=] GDEL_HD(I64 f, vid_t* v) -> bool {
-      const fid_t o = mv.opp[f];
-      const tid_t t = static_cast<tid_t>(f >> 2);
-      if (o < 0 || facet_tet(o) < t) return false;
-      for (int i = 0; i < 4; ++i) v[i] = mv.tet[t].v[i];
-      v[4] = flip::apex_of(mv, o);
-      // facet test: both tets may hold ∞, but the 5-tuple must be 5 distinct vertices
-      return true;
-    };
-    const I64 ex = par::two_stage_signs(
-        ctx, 4 * nt, sg,
-        [=] GDEL_HD(I64 f) -> std::int8_t {
-          vid_t v[5] = {0, 0, 0, 0, 0};
-          if (!tuple(f, v)) return 0;
-          return static_cast<std::int8_t>(g.orient4<false>(v, nullptr));
-        },
-        [=] GDEL_HD(I64 f, double* work) -> std::int8_t {
-          vid_t v[5] = {0, 0, 0, 0, 0};
-          if (!tuple(f, v)) return 0;
-          return static_cast<std::int8_t>(g.orient4<true>(v, work));
-        },
-        geom::kPredicateWork);
+    const I64 ex = flip::facet_signs(ctx, mv, nt, g, sg);
     par::fill(ctx, fvp, static_cast<std::size_t>(m), std::int8_t(0));
     par::parallel_for(ctx, 4 * nt, [=] GDEL_HD(I64 f) {
       if (sg[f] <= 0) return;
