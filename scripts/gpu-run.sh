@@ -190,6 +190,27 @@ case "$plan" in
     bench s5_grid_skew 60 --dist skew_lines --n 10000 \
       --methods gflip3d-cuda,gflip3d-grid-cuda,gdel3d-cuda,gdel3d-grid-cuda --repeat 1
     ;;
+  s5checks)  # after the non-optimal flips and the memory estimate: the GPU tests they touch, the grid start
+             # again, compute-sanitizer on gReg3D (racecheck) and on the two new options
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 100 "$tbin/gpu_gdel3d"
+    step hostile 170 "$tbin/gpu_hostile"
+    step grid_initial 80 "$tbin/gpu_grid" --gtest_filter='*AllGenerators*'
+    cs=$(command -v compute-sanitizer || echo /usr/local/cuda/bin/compute-sanitizer)
+    step racecheck_greg3d 60 "$cs" --tool racecheck --error-exitcode 9 "$gb" --dist uniform --n 2000 \
+      --methods greg3d-cuda --repeat 1 --no-verify
+    step memcheck_options 60 "$cs" --tool memcheck --leak-check full --error-exitcode 9 "$gb" --dist uniform --n 2000 \
+      --methods gflip3d-grid-cuda,gdel3d-grid-cuda,gflip3d-nonopt-cuda,gflip3d-terminal-nonopt-cuda --repeat 1 --no-verify
+    step racecheck_options 60 "$cs" --tool racecheck --error-exitcode 9 "$gb" --dist uniform --n 2000 \
+      --methods gflip3d-grid-cuda,gflip3d-nonopt-cuda --repeat 1 --no-verify
+    ;;
+  s5options)  # grid start and non-optimal flips against the defaults, 10^6 of every generator; 10^7 gStar4D
+    bench s5_grid 170 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 \
+      --methods gflip3d-cuda,gflip3d-grid-cuda,gdel3d-cuda,gdel3d-grid-cuda --repeat 1
+    bench s5_nonopt 170 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 \
+      --methods gflip3d-nonopt-cuda,gflip3d-terminal-cuda,gflip3d-terminal-nonopt-cuda,gdel3d-nonopt-cuda --repeat 1
+    bench s5_e7 200 --dist uniform --n 10000000 --methods gstar4d-cuda,gdel3d-cuda,gflip3d-grid-cuda,gdel3d-grid-cuda,cgal-par --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

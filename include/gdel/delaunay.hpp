@@ -146,6 +146,17 @@ struct Triangulation {
 // all points coplanar), OutOfDeviceMemory, BackendUnavailable.
 Triangulation delaunay(std::span<const double> points, const Options& options = {});
 
+// The device memory a CUDA run is expected to need for n points (bytes): a fixed 64 MiB
+// plus the peak per point measured on uniform input (bench/RESULTS.md): 2 400 bytes for
+// gflip3d / gdel3d (Auto), 5 400 for gstar4d, and the same 5 400 for gdel::regular
+// (gReg3D, `weighted`). Clustered or surface-like input needs more (up to 1.5x for gdel3d,
+// 1.8x for gstar4d on the thin shell). The CUDA backend compares this with the free device
+// memory (and Options::device_memory_limit) before it starts: when it does not fit, the
+// call fails at once with OutOfDeviceMemory (needed = the estimate, free = what is free),
+// or runs on the CPU with Options::fallback_to_cpu, instead of failing later at an
+// allocation. A run that passes the check can still run out (then the same clean error).
+std::size_t estimated_device_bytes(std::int64_t n, Algorithm algorithm = Algorithm::Auto, bool weighted = false);
+
 }  // namespace gdel
 
 // ---------------------------------------------------------------------------------------

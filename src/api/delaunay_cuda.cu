@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "api/delaunay_impl.hpp"
+#include "api/device_precheck.hpp"
 #include "api/validate.hpp"
 #include "core/backend_select.hpp"
 
@@ -16,6 +17,7 @@ namespace gdel::cuda_backend {
 Triangulation delaunay(std::span<const double> points, const Options& options) {
   par::Context<par::Cuda> ctx(options.device);
   ctx.memory().set_limit(options.device_memory_limit);
+  api::device_memory_precheck(ctx, static_cast<std::int64_t>(points.size() / 3), options.algorithm, false);
   return api::delaunay_on(ctx, points, options);
 }
 }  // namespace gdel::cuda_backend
@@ -142,6 +144,7 @@ DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& o
   ctx.memory().set_limit(options.device_memory_limit);
   DeviceTriangulation res;
   const I64 n = points.n;
+  api::device_memory_precheck(ctx, n, options.algorithm, false);
   const std::size_t count = static_cast<std::size_t>(3 * n);
 
   // Stream order: gdel's stream waits for what the producer queued on its stream.

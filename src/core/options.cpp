@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "gdel/options.hpp"
@@ -12,6 +13,11 @@ const char* to_string(Backend b) {
     case Backend::Cuda: return "cuda";
   }
   return "?";
+}
+
+std::size_t estimated_device_bytes(std::int64_t n, Algorithm algorithm, bool weighted) {
+  const double per_point = weighted || algorithm == Algorithm::gstar4d ? 5400.0 : 2400.0;
+  return (std::size_t(64) << 20) + static_cast<std::size_t>(per_point * static_cast<double>(std::max<std::int64_t>(n, 0)));
 }
 
 const char* to_string(Initial i) {

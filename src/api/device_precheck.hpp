@@ -1,0 +1,33 @@
+// Before a CUDA run: the estimated need (gdel::estimated_device_bytes) against
+// Options::device_memory_limit and the free device memory, so that a run that cannot fit
+// fails at once (OutOfDeviceMemory, or the CPU with Options::fallback_to_cpu) rather than
+// after minutes of work at some allocation. CUDA translation units only.
+#pragma once
+
+#include <cuda_runtime.h>
+
+#include <cstdint>
+#include <string>
+
+#include "gdel/delaunay.hpp"
+#include "gdel/errors.hpp"
+#include "parallel/backend.hpp"
+#include "parallel/check.hpp"
+
+namespace gdel::api {
+
+inline void device_memory_precheck(par::Context<par::Cuda>& ctx, std::int64_t n, Algorithm algorithm, bool weighted) {
+  const std::size_t need = estimated_device_bytes(n, algorithm, weighted);
+  const std::string head = "out of device memory: an estimated " + std::to_string(need) + " bytes are needed for " +
+                           std::to_string(n) + " points (gdel::estimated_device_bytes), ";
+  const std::size_t lim = ctx.memory().limit();
+  if (lim != 0 && need > lim)
+    throw OutOfDeviceMemory(head + "more than the limit of " + std::to_string(lim) + " (Options::device_memory_limit)",
+                            need, lim);
+  std::size_t free_b = 0, total_b = 0;
+  GDEL_CUDA_CHECK(cudaMemGetInfo(&free_b, &total_b));
+  if (need > free_b)
+    throw OutOfDeviceMemory(head + std::to_string(free_b) + " free of " + std::to_string(total_b), need, free_b);
+}
+
+}  // namespace gdel::api
