@@ -96,18 +96,25 @@ inline std::vector<std::int32_t> brute_colouring(int W, const std::vector<double
 template <class B>
 void grid_dual_cases() {
   par::Context<B> ctx;
-  // 1. one site per voxel, at the voxel centre: the dual is the Kuhn triangulation of the
-  //    lattice itself — valid, 6 tets per cube, every cube's 8 corners cospherical.
-  {
-    const int W = 4;
+  // One site per voxel of a 4³ grid, at the voxel centre; `fold`: the site of voxel
+  // (1,1,1) moved to (2.25, 2.25, 2.25).
+  const int W = 4;
+  std::vector<std::int32_t> site;
+  for (int i = 0; i < W * W * W; ++i) site.push_back(i);
+  auto lattice = [&](bool fold) {
     std::vector<double> xyz;
-    std::vector<std::int32_t> site;
     for (int z = 0; z < W; ++z)
       for (int y = 0; y < W; ++y)
         for (int x = 0; x < W; ++x) {
-          site.push_back(static_cast<std::int32_t>(xyz.size() / 3));
-          xyz.insert(xyz.end(), {double(x), double(y), double(z)});
+          if (fold && x == 1 && y == 1 && z == 1) xyz.insert(xyz.end(), {2.25, 2.25, 2.25});
+          else xyz.insert(xyz.end(), {double(x), double(y), double(z)});
         }
+    return xyz;
+  };
+  // 1. the dual is the Kuhn triangulation of the lattice itself — valid, 6 tets per cube,
+  //    every cube's 8 corners cospherical.
+  {
+    const std::vector<double> xyz = lattice(false);
     grid::DualStats s = dual_stats(ctx, site, W, xyz);
     EXPECT_EQ(s.grid_tets, 6 * 27);
     EXPECT_EQ(s.tets, 6 * 27);
@@ -124,16 +131,7 @@ void grid_dual_cases() {
   // 2. the same sites with corner 000 of the middle cube pushed through the opposite
   //    corner's side: the map from grid to space folds (inverted dual tets, overlaps).
   {
-    const int W = 4;
-    std::vector<double> xyz;
-    std::vector<std::int32_t> site;
-    for (int z = 0; z < W; ++z)
-      for (int y = 0; y < W; ++y)
-        for (int x = 0; x < W; ++x) {
-          site.push_back(static_cast<std::int32_t>(xyz.size() / 3));
-          if (x == 1 && y == 1 && z == 1) xyz.insert(xyz.end(), {2.25, 2.25, 2.25});
-          else xyz.insert(xyz.end(), {double(x), double(y), double(z)});
-        }
+    const std::vector<double> xyz = lattice(true);
     grid::DualStats s = dual_stats(ctx, site, W, xyz);
     EXPECT_EQ(s.tets, 6 * 27);
     EXPECT_GT(s.inverted, 0);
