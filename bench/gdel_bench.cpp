@@ -5,7 +5,7 @@
 //   gdel-bench [--dist uniform,gaussian,...] [--n 100000,1000000] [--methods LIST]
 //              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify]
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
-//   methods: gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
+//   methods: auto-cuda, auto-cpu (Algorithm::Auto), gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            (gflip3d-* and gdel3d-* with "-grid-" in the name, e.g. gdel3d-grid-cuda: Options::initial = grid;
 //             with "nonopt", e.g. gflip3d-nonopt-cpu: Options::nonoptimal_flips)
 //            cgal, cgal-par   (default: all available)
@@ -137,11 +137,16 @@ int main(int argc, char** argv) {
         r.method = m;
         r.n = n;
         std::vector<double> times;
-        if (m.rfind("gflip3d", 0) == 0 || m.rfind("gdel3d", 0) == 0 || m.rfind("gstar4d", 0) == 0) {
+        if (m.rfind("gflip3d", 0) == 0 || m.rfind("gdel3d", 0) == 0 || m.rfind("gstar4d", 0) == 0 ||
+            m.rfind("auto", 0) == 0) {
           const bool star = m.rfind("gstar4d", 0) == 0;
-          const bool exact = star || m.rfind("gdel3d", 0) == 0;
+          const bool automatic = m.rfind("auto", 0) == 0;  // Algorithm::Auto (auto-cuda, auto-cpu)
+          const bool exact = star || automatic || m.rfind("gdel3d", 0) == 0;
           gdel::Options o;
-          o.algorithm = star ? gdel::Algorithm::gstar4d : exact ? gdel::Algorithm::gdel3d : gdel::Algorithm::gflip3d;
+          o.algorithm = star        ? gdel::Algorithm::gstar4d
+                        : automatic ? gdel::Algorithm::Auto
+                        : exact     ? gdel::Algorithm::gdel3d
+                                    : gdel::Algorithm::gflip3d;
           o.terminal_flipping = m.find("terminal") != std::string::npos;
           o.initial = m.find("-grid-") != std::string::npos ? gdel::Initial::grid : gdel::Initial::Default;
           o.nonoptimal_flips = m.find("nonopt") != std::string::npos;

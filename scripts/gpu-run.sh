@@ -211,6 +211,16 @@ case "$plan" in
       --methods gflip3d-nonopt-cuda,gflip3d-terminal-cuda,gflip3d-terminal-nonopt-cuda,gdel3d-nonopt-cuda --repeat 1
     bench s5_e7 200 --dist uniform --n 10000000 --methods gstar4d-cuda,gdel3d-cuda,gflip3d-grid-cuda,gdel3d-grid-cuda,cgal-par --repeat 1
     ;;
+  s5race)  # compute-sanitizer racecheck where the gdel-bench runs were too slow under it: gReg3D and the two
+           # new options, through the gdel command on 500 points (no warm-up run)
+    cs=$(command -v compute-sanitizer || echo /usr/local/cuda/bin/compute-sanitizer)
+    "$bin/gdel" generate uniform 500 -o /tmp/race.xyz >/dev/null
+    awk '{print 0.001*(NR%7)}' /tmp/race.xyz >/tmp/race_w.txt
+    step racecheck_greg3d 200 "$cs" --tool racecheck --error-exitcode 9 "$bin/gdel" regular /tmp/race.xyz \
+      --weights /tmp/race_w.txt -o /tmp/race_r.ele --device cuda --check
+    step racecheck_options 150 "$cs" --tool racecheck --error-exitcode 9 "$bin/gdel" delaunay --example uniform:500 \
+      --initial grid --nonoptimal-flips --algorithm gdel3d --device cuda -o /tmp/race_g.ele --check
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -13,7 +13,9 @@
 namespace gdel {
 
 enum class Algorithm {
-  Auto,     // the best available exact algorithm (today: gdel3d)
+  Auto,     // the best available exact algorithm: today gdel3d with non-optimal flipping
+            // when it is stuck on fewer facets than 1 % of the points (bench/RESULTS.md,
+            // 2026-11-24: much faster repair on the grid, no loss elsewhere)
   gflip3d,  // parallel insertion + flipping: a near-Delaunay triangulation (failed vertices reported)
   gdel3d,   // gflip3d + parallel star-splaying repair: the exact Delaunay triangulation
   gstar4d,  // digital Voronoi diagram -> working sets -> 4-D stars -> parallel star splaying:
@@ -52,7 +54,10 @@ struct Options {
   // reflex edge has degree > 3) gets valid, non-improving 2-3 flips around that edge
   // until the edge has degree 3 and its 3-2 flip may remove the facet; normal flipping
   // then resumes. Capped rounds; the triangulation with the fewest non-locally-Delaunay
-  // facets seen is kept. Off by default: an experiment (measured in docs/gflip3d.md).
+  // facets seen is kept. true: always (any algorithm built on gFlip3D). false: only
+  // under Algorithm::Auto, and only when the stuck facets are fewer than 1 % of the
+  // points (on cospherical input, where most facets are ties, it costs more than the
+  // repair it saves; measured in bench/RESULTS.md and docs/gflip3d.md).
   bool nonoptimal_flips = false;
   // gFlip3D: re-order tets by smallest vertex id every second insertion round, for
   // memory locality (measured without gain on an H200 at 10^6..10^7 points; a study knob).

@@ -112,7 +112,9 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   flip::FlipConfig cfg;
   cfg.rule = opt.insertion;
   cfg.terminal = opt.terminal_flipping;
-  cfg.nonoptimal = opt.nonoptimal_flips;
+  // non-optimal flipping: on request, or under Auto when stuck on < 1 % of the points
+  cfg.nonoptimal = opt.nonoptimal_flips || opt.algorithm == Algorithm::Auto;
+  if (!opt.nonoptimal_flips) cfg.nonoptimal_max_share = 0.01;
   cfg.reorder_tets = opt.reorder_tets;
   flip::GFlip3D<B> alg(ctx, P, sid, m, cfg, st);
   if (opt.initial == Initial::grid) grid::grid_initial(ctx, alg, P, sid, m, lo, hi, opt, st);  // else: first tet

@@ -40,6 +40,8 @@ struct FlipConfig {
   // at most nonoptimal_rounds rounds, each of at most nonoptimal_steps parallel steps of
   // non-improving flips followed by a normal flip loop.
   bool nonoptimal = false;
+  // ... skipped when the stuck facets exceed this share of the points (1: never skipped)
+  double nonoptimal_max_share = 1.0;
   int nonoptimal_rounds = 16;
   int nonoptimal_steps = 8;
 };
@@ -826,6 +828,11 @@ class GFlip3D {
     Buffer<tid_t, B> stuck(ctx_);
     std::int64_t cnt = non_ld_facets(stuck);
     st_.nonld_facets_stuck = cnt;
+    if (static_cast<double>(cnt) > cfg_.nonoptimal_max_share * static_cast<double>(n_)) {
+      st_.nonld_facets_kept = cnt;  // too many (cospherical input): left to the repair
+      active_.resize(0);
+      return;
+    }
     std::int64_t best = cnt;
     mesh::TetMesh<B> kept(ctx_);
     bool saved = false;  // `kept` holds a state with `best` facets

@@ -4,3 +4,4 @@ TEST(GFlip3DCpu, AllGenerators) { gdel::test::gflip_generator_cases(gdel::Backen
 TEST(GFlip3DCpu, DegenerateAndHostileInput) { gdel::test::gflip_degenerate_cases(gdel::Backend::Cpu); }
 TEST(GFlip3DCpu, NonoptimalFlipsAllGenerators) { gdel::test::nonoptimal_generator_cases(gdel::Backend::Cpu, 2000); }
 TEST(GFlip3DCpu, NonoptimalFlipsReduceStuckFacets) { gdel::test::nonoptimal_reduces_cases(gdel::Backend::Cpu); }
+TEST(GFlip3DCpu, AutoUsesNonoptimalFlipsWhenFewAreStuck) { gdel::test::nonoptimal_auto_cases(gdel::Backend::Cpu); }
