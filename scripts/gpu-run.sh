@@ -221,6 +221,17 @@ case "$plan" in
     step racecheck_options 150 "$cs" --tool racecheck --error-exitcode 9 "$bin/gdel" delaunay --example uniform:500 \
       --initial grid --nonoptimal-flips --algorithm gdel3d --device cuda -o /tmp/race_g.ele --check
     ;;
+  s5auto)  # Auto (gdel3d + non-optimal flips when few facets are stuck): the GPU tests it touches, and the
+           # gDel3D benchmark of issue 4 in one process per table: uniform 10^5..10^7 and 10^6 of every other
+           # generator (skew lines 10^4: Θ(n²) tets), against CGAL sequential and parallel
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 60 "$tbin/gpu_gdel3d"
+    step grid_initial 60 "$tbin/gpu_grid" --gtest_filter='*AllGenerators*'
+    bench s5_auto_u 130 --dist uniform --n 100000,1000000,10000000 --methods auto-cuda,gdel3d-cuda,cgal-par,cgal --repeat 1
+    bench s5_auto_d 90 --dist gaussian,thin_shell,ball,grid --n 1000000 --methods auto-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1
+    bench s5_auto_skew 30 --dist skew_lines --n 10000 --methods auto-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1
+    bench s5_auto_sphere 170 --dist sphere --n 1000000 --methods auto-cuda,gdel3d-cuda,cgal --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -16,7 +16,7 @@
 //      exactly; the counts go to Stats (the measured negative results). A sample with
 //      many exact ties (flat dual tets or cospherical dual pairs ≥ kDegenerateShare of
 //      the dual tets: lattice-like or cospherical input) is not used — gStar4D's star
-//      splaying is very slow on such input (docs/gstar4d.md) — and the default start is
+//      splaying is slow on such input (exact ties in every test) (docs/gstar4d.md) — and the default start is
 //      taken instead.
 //   3. the sites' exact Delaunay triangulation from the dual by star splaying: gStar4D
 //      (star4d::gstar4d) on the sites with that same grid, so its working sets are the
@@ -62,7 +62,7 @@
 namespace gdel::grid {
 
 // Points per coarse voxel (the sample is about one site per kPointsPerSite points on
-// uniform input). Measured on the CPU backend: docs/grid.md.
+// uniform input). Our choice; docs/grid.md has the measured outcome.
 inline constexpr double kPointsPerSite = 16.0;
 // A sample whose dual has at least this share of exact ties is not used (step 2).
 inline constexpr double kDegenerateShare = 0.01;
