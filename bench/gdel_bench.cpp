@@ -7,7 +7,8 @@
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
 //   methods: auto-cuda, auto-cpu (Algorithm::Auto), gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            (gflip3d-* and gdel3d-* with "-grid-" in the name, e.g. gdel3d-grid-cuda: Options::initial = grid;
-//             with "nonopt", e.g. gflip3d-nonopt-cpu: Options::nonoptimal_flips)
+//             with "nonopt", e.g. gflip3d-nonopt-cpu: Options::nonoptimal_flips;
+//             with "-random" or "-centroid", e.g. gflip3d-random-cpu: Options::insertion)
 //            cgal, cgal-par   (default: all available)
 //   weighted points (regular triangulation): greg3d-cuda, greg3d-cpu, cgal-regular, cgal-regular-par,
 //            with weights scale * h^2 * U(0,1), h the mean spacing of the points' bounding box
@@ -150,6 +151,9 @@ int main(int argc, char** argv) {
           o.terminal_flipping = m.find("terminal") != std::string::npos;
           o.initial = m.find("-grid-") != std::string::npos ? gdel::Initial::grid : gdel::Initial::Default;
           o.nonoptimal_flips = m.find("nonopt") != std::string::npos;
+          o.insertion = m.find("-random") != std::string::npos     ? gdel::InsertionRule::Random
+                        : m.find("-centroid") != std::string::npos ? gdel::InsertionRule::Centroid
+                                                                   : gdel::InsertionRule::Circumcenter;
           o.reorder_tets = std::getenv("GDEL_TET_REORDER") != nullptr;
           o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
           if (o.backend == gdel::Backend::Cuda && !have_cuda) continue;

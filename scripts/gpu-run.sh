@@ -232,6 +232,16 @@ case "$plan" in
     bench s5_auto_skew 30 --dist skew_lines --n 10000 --methods auto-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1
     bench s5_auto_sphere 170 --dist sphere --n 1000000 --methods auto-cuda,gdel3d-cuda,cgal --repeat 1
     ;;
+  s6skew)  # 2026-11-24 (session 6): two skew lines after the tie-break and CPU serial-cutoff changes: the
+            # 10^4 structural test (Θ(n²) = 25 M tets), gdel vs CGAL on skew lines, 10^6 uniform / thin
+            # shell to see that the tie-break changed nothing there, then the gFlip3D/gDel3D tests
+    step gdel3d_skew 150 "$tbin/gpu_gdel3d" --gtest_filter='*SkewLines*'
+    bench s6_skew 100 --dist skew_lines --n 2000,4000 --methods gflip3d-cuda,gdel3d-cuda,cgal,cgal-par --repeat 1
+    bench s6_skew_e4 120 --dist skew_lines --n 10000 --methods gdel3d-cuda,cgal,cgal-par --repeat 1
+    bench s6_e6 50 --dist uniform,thin_shell --n 1000000 --methods gflip3d-cuda,gdel3d-cuda --repeat 1
+    step gdel3d 80 "$tbin/gpu_gdel3d" --gtest_filter='-*SkewLines*'
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

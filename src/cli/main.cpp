@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> kAlgorithms = {"auto", "gdel3d", "gstar4d", "gflip3d"};
 
   // delaunay ------------------------------------------------------------------------------
-  std::string in, out, algorithm = "auto", device = "auto", example, initial = "default";
+  std::string in, out, algorithm = "auto", device = "auto", example, initial = "default", rule = "circumcenter";
   bool check = false, stats = false, terminal = false, nonoptimal = false;
   std::uint64_t seed = 1;
   auto* del = app.add_subcommand("delaunay", "triangulate points and write the mesh");
@@ -137,6 +137,11 @@ int main(int argc, char** argv) {
                   "what gFlip3D/gDel3D start from: default (one tetrahedron) | grid (the Delaunay triangulation of "
                   "a coarse grid's sample, from the dual of its digital Voronoi diagram; docs/grid.md)")
       ->check(CLI::IsMember(std::vector<std::string>{"default", "grid"}))
+      ->capture_default_str();
+  del->add_option("--insertion-rule", rule,
+                  "gFlip3D: the point each tet inserts per round: circumcenter (nearest to the circumcentre) | "
+                  "centroid | random (for study)")
+      ->check(CLI::IsMember(std::vector<std::string>{"circumcenter", "centroid", "random"}))
       ->capture_default_str();
   del->add_flag("--stats", stats, "print time per stage, counts and memory");
   add_common(del, common);
@@ -244,6 +249,9 @@ int main(int argc, char** argv) {
       o.terminal_flipping = terminal;
       o.nonoptimal_flips = nonoptimal;
       o.initial = initial == "grid" ? gdel::Initial::grid : gdel::Initial::Default;
+      o.insertion = rule == "random"     ? gdel::InsertionRule::Random
+                    : rule == "centroid" ? gdel::InsertionRule::Centroid
+                                         : gdel::InsertionRule::Circumcenter;
       const gdel::Backend backend = gdel::resolve_backend(o.backend);  // BackendUnavailable: exit 4, before reading
 
       auto t0 = Clock::now();

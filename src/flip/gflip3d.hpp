@@ -74,6 +74,7 @@ class GFlip3D {
 
   void run() {
     debug_ = std::getenv("GDEL_CHECK_MESH") != nullptr;
+    trace_ = std::getenv("GDEL_FLIP_TRACE") != nullptr;
     auto t0 = std::chrono::steady_clock::now();
     const bool preset = mesh_.size() > 0;  // init_from() gave the start (Options::initial = grid)
     if (!preset) init();
@@ -92,8 +93,15 @@ class GFlip3D {
       remaining = static_cast<std::int64_t>(todo_.size());
       if (flipping) {
         auto tf = std::chrono::steady_clock::now();
+        const std::int64_t it0 = st_.flip_iterations, f0 = st_.flips23 + st_.flips32;
         flip_loop(/*all_tets=*/false, /*with_log=*/remaining > 0);
         t_flip_ += since(tf);
+        if (trace_)
+          std::fprintf(stderr, "gflip3d round %lld: inserted %lld, remaining %lld, tets %lld, flip iterations %lld, flips %lld, %.4f s\n",
+                       static_cast<long long>(st_.rounds), static_cast<long long>(inserted),
+                       static_cast<long long>(remaining), static_cast<long long>(mesh_.size()),
+                       static_cast<long long>(st_.flip_iterations - it0),
+                       static_cast<long long>(st_.flips23 + st_.flips32 - f0), since(tf));
         if (remaining > 0) {
           auto tl = std::chrono::steady_clock::now();
           relocate_through_dag();
@@ -421,6 +429,19 @@ class GFlip3D {
   }
 
   // --- one insertion round: choose, split, relocate ---------------------------------
+  // The low half of a tet's best-point key: a bijective mix of the point id, so that
+  // equal scores pick a pseudo-random point rather than the first in Hilbert order.
+  // Equal scores are the rule on degenerate input: on two skew lines every candidate
+  // of a flat tet has insphere value 0, and taking the first id inserted the points of
+  // a segment one per round in order (170 rounds for 400 points, against 10).
+  static GDEL_HD std::uint32_t tie_break(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+  }
   std::int64_t insert_round() {
     MeshView m = mesh_.view();
     const Geo g = geo();
@@ -459,7 +480,7 @@ class GFlip3D {
       float f = (sc > 0 && sc < 3.0e38) ? static_cast<float>(sc) : (sc >= 3.0e38 ? 3.0e38f : 0.0f);
       std::uint32_t bits;
       std::memcpy(&bits, &f, sizeof bits);
-      std::uint64_t key = (std::uint64_t(bits) << 32) | std::uint32_t(0xffffffffu - std::uint32_t(q));
+      std::uint64_t key = (std::uint64_t(bits) << 32) | tie_break(std::uint32_t(q));
       par::atomic_max(best + t, key);
     });
     par::mark(ctx_, "insert: scores");
@@ -468,7 +489,7 @@ class GFlip3D {
     std::int64_t* wp = win.data();
     std::int64_t k = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(u), wp, [=] GDEL_HD(std::int64_t i) {
       const vid_t q = U[i];
-      return std::uint32_t(best[vt[q]]) == std::uint32_t(0xffffffffu - std::uint32_t(q));
+      return std::uint32_t(best[vt[q]]) == tie_break(std::uint32_t(q));
     }));
     par::mark(ctx_, "insert: select winners");
     // 3. slots: 3 new per split (child 0 reuses the split tet's slot)
@@ -1073,6 +1094,7 @@ class GFlip3D {
   std::vector<std::int64_t> log_iters_{0};
   double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0, t_reorder_ = 0;
   bool debug_ = false;
+  bool trace_ = false;  // GDEL_FLIP_TRACE=1: one line per InsFlip round on stderr
   double inv_scale_ = 1.0;
 };
 

@@ -26,7 +26,7 @@ inline constexpr std::int8_t kUndecided = 2;
 template <class F>
 void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f) {
   if (n <= 0) return;
-#pragma omp parallel
+#pragma omp parallel if (n >= 64)  // exact items are costly: a team pays off early
   {
     std::vector<double> work(work_doubles);
 #pragma omp for schedule(dynamic, 64)

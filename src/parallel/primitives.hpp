@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include <thrust/copy.h>
+#include <thrust/execution_policy.h>
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/reduce.h>
 #include <thrust/scan.h>
@@ -37,44 +38,58 @@ namespace gdel::par {
 // CPU backend
 // ---------------------------------------------------------------------------
 
+// Below this many items a CPU primitive runs on the calling thread: waking the team
+// costs more than the work (it dominated the thousands of tiny flip iterations of
+// degenerate inputs such as two skew lines). Results do not depend on it.
+inline constexpr std::int64_t kSerialBelow = 4096;
+
+// Runs op(policy) with Thrust's sequential policy for small n, OpenMP otherwise.
+template <class Op>
+decltype(auto) with_policy(std::size_t n, Op op) {
+  if (static_cast<std::int64_t>(n) < kSerialBelow) return op(thrust::seq);
+  return op(thrust::omp::par);
+}
+
 // f(i) for i in [0, n), in parallel. f must be safe to run concurrently.
 template <class F>
 void parallel_for(Context<Cpu>&, std::int64_t n, F f) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kSerialBelow)
   for (std::int64_t i = 0; i < n; ++i) f(i);
 }
 
 template <class T>
 void exclusive_scan(Context<Cpu>&, const T* in, T* out, std::size_t n) {
-  thrust::exclusive_scan(thrust::omp::par, in, in + n, out, T(0));
+  with_policy(n, [&](auto pol) { thrust::exclusive_scan(pol, in, in + n, out, T(0)); });
 }
 template <class T>
 void inclusive_scan(Context<Cpu>&, const T* in, T* out, std::size_t n) {
-  thrust::inclusive_scan(thrust::omp::par, in, in + n, out);
+  with_policy(n, [&](auto pol) { thrust::inclusive_scan(pol, in, in + n, out); });
 }
 // Synchronizes. Sum of all elements.
 template <class T>
 T reduce_sum(Context<Cpu>&, const T* in, std::size_t n) {
-  return thrust::reduce(thrust::omp::par, in, in + n, T(0));
+  return with_policy(n, [&](auto pol) { return thrust::reduce(pol, in, in + n, T(0)); });
 }
 template <class T>
 T reduce_max(Context<Cpu>&, const T* in, std::size_t n, T init) {
-  return thrust::reduce(thrust::omp::par, in, in + n, init, thrust::maximum<T>());
+  return with_policy(n, [&](auto pol) { return thrust::reduce(pol, in, in + n, init, thrust::maximum<T>()); });
 }
 template <class T>
 T reduce_min(Context<Cpu>&, const T* in, std::size_t n, T init) {
-  return thrust::reduce(thrust::omp::par, in, in + n, init, thrust::minimum<T>());
+  return with_policy(n, [&](auto pol) { return thrust::reduce(pol, in, in + n, init, thrust::minimum<T>()); });
 }
 // Stable compaction of values satisfying pred; returns the count (synchronizes).
 template <class T, class Pred>
 std::size_t copy_if(Context<Cpu>&, const T* in, T* out, std::size_t n, Pred pred) {
-  return static_cast<std::size_t>(thrust::copy_if(thrust::omp::par, in, in + n, out, pred) - out);
+  return with_policy(n, [&](auto pol) { return static_cast<std::size_t>(thrust::copy_if(pol, in, in + n, out, pred) - out); });
 }
 // Indices i in [0, n) with pred(i), ascending; returns the count (synchronizes).
 template <class I, class Pred>
 std::size_t select_indices(Context<Cpu>&, std::size_t n, I* out, Pred pred) {
   thrust::counting_iterator<I> first(0);
-  return static_cast<std::size_t>(thrust::copy_if(thrust::omp::par, first, first + n, out, pred) - out);
+  return with_policy(n, [&](auto pol) {
+    return static_cast<std::size_t>(thrust::copy_if(pol, first, first + n, out, pred) - out);
+  });
 }
 namespace detail {
 // Thrust 3.0's OpenMP stable sort mis-orders negative signed integer keys (its radix
@@ -85,7 +100,7 @@ void flip_sign_bits(K* keys, std::size_t n) {
   using U = std::make_unsigned_t<K>;
   const U bit = U(1) << (sizeof(K) * 8 - 1);
   U* u = reinterpret_cast<U*>(keys);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (static_cast<std::int64_t>(n) >= kSerialBelow)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) u[i] ^= bit;
 }
 }  // namespace detail
@@ -99,10 +114,10 @@ void sort_keys(Context<Cpu>&, K* keys, std::size_t n, int /*end_bit*/ = int(size
     using U = std::make_unsigned_t<K>;
     detail::flip_sign_bits(keys, n);
     U* u = reinterpret_cast<U*>(keys);
-    thrust::stable_sort(thrust::omp::par, u, u + n);
+    with_policy(n, [&](auto pol) { thrust::stable_sort(pol, u, u + n); });
     detail::flip_sign_bits(keys, n);
   } else {
-    thrust::stable_sort(thrust::omp::par, keys, keys + n);
+    with_policy(n, [&](auto pol) { thrust::stable_sort(pol, keys, keys + n); });
   }
 }
 template <class K, class V>
@@ -112,10 +127,10 @@ void sort_pairs(Context<Cpu>&, K* keys, V* values, std::size_t n, int /*end_bit*
     using U = std::make_unsigned_t<K>;
     detail::flip_sign_bits(keys, n);
     U* u = reinterpret_cast<U*>(keys);
-    thrust::stable_sort_by_key(thrust::omp::par, u, u + n, values);
+    with_policy(n, [&](auto pol) { thrust::stable_sort_by_key(pol, u, u + n, values); });
     detail::flip_sign_bits(keys, n);
   } else {
-    thrust::stable_sort_by_key(thrust::omp::par, keys, keys + n, values);
+    with_policy(n, [&](auto pol) { thrust::stable_sort_by_key(pol, keys, keys + n, values); });
   }
 }
 // In-place removal of consecutive duplicates; returns the new count (synchronizes).
@@ -128,10 +143,11 @@ std::size_t unique(Context<Cpu>& c, T* data, std::size_t n) {
   std::memcpy(tmp.data(), data, n * sizeof(T));
   const T* t = tmp.data();
   thrust::counting_iterator<std::size_t> first(0);
-  return static_cast<std::size_t>(
-      thrust::copy_if(thrust::omp::par, t, t + n, first, data,
-                      [t](std::size_t i) { return i == 0 || !(t[i] == t[i - 1]); }) -
-      data);
+  return with_policy(n, [&](auto pol) {
+    return static_cast<std::size_t>(
+        thrust::copy_if(pol, t, t + n, first, data, [t](std::size_t i) { return i == 0 || !(t[i] == t[i - 1]); }) -
+        data);
+  });
 }
 
 // ---------------------------------------------------------------------------

@@ -89,7 +89,8 @@ struct StarView {
 struct SplayStats {
   I64 rounds = 0, insertions = 0, stars_pulled = 0, proofs = 0, dead = 0;
   // the critical path of one thread per star: Σ over the build and every round of the most
-  // insertions into one star, and the most triangles one star held (largest_star())
+  // insertions into one star (counted only with GDEL_SPLAY_DEBUG set: it costs a reduction
+  // per round), and the most triangles one star held (largest_star())
   I64 critical = 0, largest = 0;
 };
 
@@ -247,7 +248,7 @@ class Splayer {
       std::fprintf(stderr, "splay: building %lld stars, largest working set %d\n", (long long)k,
                    k ? par::reduce_max(ctx_, cp, static_cast<std::size_t>(k), std::int32_t(0)) / 4 - 2 : 0);
     const I64 s0 = add_stars(gv, caps);
-    ss_.critical += most_per_star(lhp, k, nl);
+    if (debug_) ss_.critical += most_per_star(lhp, k, nl);  // a debug statistic: costs a sync
     add_history(lk);
     Buffer<U64, B> okey(ctx_, static_cast<std::size_t>(nl));
     Buffer<vid_t, B> ordv(ctx_, static_cast<std::size_t>(nl));
@@ -620,7 +621,7 @@ class Splayer {
       np[s] = 2 * (cnt[s] + 2 * static_cast<std::int32_t>(b - a)) + 4;
     });
     ensure_capacity(np);
-    ss_.critical += most_per_star(hp, static_cast<I64>(nh), n);
+    if (debug_) ss_.critical += most_per_star(hp, static_cast<I64>(nh), n);
     // room for gone pairs: every link vertex and every insertion at most once
     Buffer<I64, B> room(ctx_, static_cast<std::size_t>(nh + 1));
     I64* rmp = room.data();

@@ -5,6 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
+#include <utility>
+#include <vector>
+
 #include "common/gflip_cases.hpp"
 
 namespace gdel::test {
@@ -38,6 +43,41 @@ inline void gdel3d_generator_cases(Backend b, std::size_t n) {
     EXPECT_EQ(t.tets, t2.tets);
     EXPECT_EQ(t.neighbors, t2.neighbors);
   }
+}
+
+// Two skew lines (gen::skew_lines: a points on the x axis at z = 0, b on the line x = 0,
+// z = 1): the Delaunay triangulation is unique and known. No sphere holds 3 points of a
+// line, so no 5 points are cospherical, and a tet with 3 points on one line is flat: the
+// tets are exactly the (a-1)(b-1) joins of an edge between consecutive points of one line
+// with an edge between consecutive points of the other, Theta(n^2) of them. The flip
+// chains this input needs are the serial worst case of gFlip3D.
+inline void gdel3d_skew_lines_case(Backend b, std::size_t n) {
+  auto pts = gen::skew_lines(n, 99);
+  Options o;
+  o.backend = b;
+  Triangulation t = delaunay(pts, o);
+  expect_exact_delaunay(pts, t, b);
+  // rank of each point along its line
+  std::vector<std::pair<double, std::size_t>> la, lb;
+  for (std::size_t i = 0; i < n; ++i) (pts[3 * i + 2] == 0.0 ? la : lb).push_back({pts[3 * i] + pts[3 * i + 1], i});
+  std::sort(la.begin(), la.end());
+  std::sort(lb.begin(), lb.end());
+  std::vector<std::int64_t> rank(n), line(n);
+  for (std::size_t r = 0; r < la.size(); ++r) rank[la[r].second] = std::int64_t(r), line[la[r].second] = 0;
+  for (std::size_t r = 0; r < lb.size(); ++r) rank[lb[r].second] = std::int64_t(r), line[lb[r].second] = 1;
+  ASSERT_EQ(t.num_tets(), std::int64_t((la.size() - 1) * (lb.size() - 1)));
+  std::int64_t bad = 0;
+  for (std::int64_t k = 0; k < t.num_tets(); ++k) {
+    std::int64_t r[2][2], c[2] = {0, 0};
+    for (int j = 0; j < 4; ++j) {
+      const auto v = static_cast<std::size_t>(t.tets[std::size_t(4 * k + j)]);
+      if (c[line[v]] < 2) r[line[v]][c[line[v]]] = rank[v];
+      ++c[line[v]];
+    }
+    const bool ok = c[0] == 2 && c[1] == 2 && std::abs(r[0][0] - r[0][1]) == 1 && std::abs(r[1][0] - r[1][1]) == 1;
+    bad += ok ? 0 : 1;
+  }
+  EXPECT_EQ(bad, 0) << "tets that are not the join of two consecutive-point edges";
 }
 
 // Degenerate configurations the repair must handle: cospherical and coplanar subsets.

@@ -32,7 +32,9 @@ inline void nonoptimal_generator_cases(Backend b, std::size_t n) {
       Triangulation t = delaunay(pts, nonoptimal_options(b, Algorithm::gflip3d, terminal, true));
       expect_flip_output_valid(pts, t, b, terminal);
       EXPECT_LE(t.stats.nonld_facets_kept, t.stats.nonld_facets_stuck);
-      if (t.stats.nonld_facets_stuck > 0) EXPECT_GT(t.stats.nonoptimal_rounds, 0);
+      if (t.stats.nonld_facets_stuck > 0) {
+        EXPECT_GT(t.stats.nonoptimal_rounds, 0);
+      }
       // every facet has a finite vertex: no failed vertex iff no such facet is kept
       EXPECT_EQ(t.failed_vertices.empty(), t.stats.nonld_facets_kept == 0);
 
@@ -66,7 +68,9 @@ inline void nonoptimal_reduces_cases(Backend b) {
     EXPECT_LT(rt.non_delaunay_facets, rp.non_delaunay_facets);
     EXPECT_LT(t.failed_vertices.size(), plain.failed_vertices.size());
     // the terminal variant: at least a fifth fewer (measured: 4566 -> 3230 on the CPU)
-    if (terminal) EXPECT_LT(5 * rt.non_delaunay_facets, 4 * rp.non_delaunay_facets);
+    if (terminal) {
+      EXPECT_LT(5 * rt.non_delaunay_facets, 4 * rp.non_delaunay_facets);
+    }
   }
 }
 

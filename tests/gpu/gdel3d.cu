@@ -1,5 +1,7 @@
 #include "common/gdel3d_cases.hpp"
 TEST(GDel3DGpu, AllGenerators) { gdel::test::gdel3d_generator_cases(gdel::Backend::Cuda, 20000); }
+// 10^4 points: 24 990 001 tets
+TEST(GDel3DGpu, SkewLines) { gdel::test::gdel3d_skew_lines_case(gdel::Backend::Cuda, 10000); }
 TEST(GDel3DGpu, Degenerate) { gdel::test::gdel3d_degenerate_cases(gdel::Backend::Cuda); }
 TEST(GDel3DGpu, MillionPoints) {
   // (grid at 10^6 is left out: its repair does not finish in minutes yet; see the
