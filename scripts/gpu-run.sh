@@ -83,7 +83,7 @@ step() {
   fi
   echo "== step $name: rc=$rc ${dt}s$note" | tee -a "$out/summary.txt"
   grep -E '^\[  FAILED  \]|Failure$|^Expected|^Which is|^  Actual' "$log" | head -20
-  grep -E '^[a-z_]+ +[0-9]+ (gstar4d|gdel3d|gflip3d|greg3d|cgal)' "$log" | cut -c1-200
+  grep -E '^[a-z_]+ +[0-9]+ (gstar4d|gdel3d|gflip3d|greg3d|auto|cgal)' "$log" | cut -c1-200
 }
 gb="$bin/gdel-bench"
 jdir=/tmp/gpu-run-json
@@ -240,6 +240,23 @@ case "$plan" in
     bench s6_skew_e4 120 --dist skew_lines --n 10000 --methods gdel3d-cuda,cgal,cgal-par --repeat 1
     bench s6_e6 50 --dist uniform,thin_shell --n 1000000 --methods gflip3d-cuda,gdel3d-cuda --repeat 1
     step gdel3d 80 "$tbin/gpu_gdel3d" --gtest_filter='-*SkewLines*'
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    ;;
+  s6tie)  # the three tie-break modes of gFlip3D's insertion key (GDEL_TIE_BREAK, src/flip/gflip3d.hpp) on
+           # every generator at 10^6 (Auto and gdel3d) and on skew lines; then the tests with the default
+    for mode in hash dyadic first; do
+      export GDEL_TIE_BREAK=$mode
+      bench "t_${mode}" 90 --dist grid,sphere,uniform,thin_shell --n 1000000 --methods auto-cuda,gdel3d-cuda --repeat 1
+      bench "t_${mode}_skew" 30 --dist skew_lines --n 2000 --methods gdel3d-cuda --repeat 1
+      step "gdel3d_${mode}" 30 "$tbin/gpu_gdel3d" --gtest_filter='-*SkewLines*'
+    done
+    unset GDEL_TIE_BREAK
+    ;;
+  s6hybrid)  # the default tie-break "hybrid" (hash among zero scores, smallest id otherwise): the generators
+              # that decided it, the skew-lines 10^4 test and the gFlip3D / gDel3D tests
+    bench h_e6 90 --dist grid,sphere,uniform,thin_shell,gaussian,ball --n 1000000 --methods auto-cuda,gdel3d-cuda --repeat 1
+    bench h_skew 40 --dist skew_lines --n 2000 --methods gdel3d-cuda --repeat 1
+    step gdel3d 200 "$tbin/gpu_gdel3d"
     step gflip3d 120 "$tbin/gpu_gflip3d"
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)

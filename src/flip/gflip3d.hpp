@@ -75,6 +75,7 @@ class GFlip3D {
   void run() {
     debug_ = std::getenv("GDEL_CHECK_MESH") != nullptr;
     trace_ = std::getenv("GDEL_FLIP_TRACE") != nullptr;
+    tie_mode_ = tie_mode_from_env();
     auto t0 = std::chrono::steady_clock::now();
     const bool preset = mesh_.size() > 0;  // init_from() gave the start (Options::initial = grid)
     if (!preset) init();
@@ -429,12 +430,30 @@ class GFlip3D {
   }
 
   // --- one insertion round: choose, split, relocate ---------------------------------
-  // The low half of a tet's best-point key: a bijective mix of the point id, so that
-  // equal scores pick a pseudo-random point rather than the first in Hilbert order.
-  // Equal scores are the rule on degenerate input: on two skew lines every candidate
-  // of a flat tet has insphere value 0, and taking the first id inserted the points of
-  // a segment one per round in order (170 rounds for 400 points, against 10).
-  static GDEL_HD std::uint32_t tie_break(std::uint32_t x) {
+  // The low half of a tet's best-point key: it decides between equal scores. Equal
+  // scores are the rule on degenerate input, and the choice matters both ways (H100, 10^6
+  // grid and 2 000 skew-line points, bench/RESULTS.md 2026-11-24 session 6):
+  //  - on two skew lines every candidate in a flat tet scores 0, and the smallest id
+  //    (Hilbert order) inserted the points of a segment one per round, in order (400
+  //    points: 170 rounds, against 12 with a hash; 2 000 points > 30 s against 7.3 s);
+  //  - on the grid (equal nonzero scores) the smallest id left a triangulation the
+  //    repair fixed in 0.16 s under Auto, a hash one it needed 8.8 s for.
+  // So mode 3 ("hybrid", the default) takes the smallest id among equal nonzero scores
+  // and a hash of the id among zero scores. Study knob GDEL_TIE_BREAK: 0 "hash", 1
+  // "dyadic" (the id with the most trailing zero bits: binary-search order along a
+  // run of ids), 2 "first" (smallest id), 3 "hybrid". Every mode is a bijection of the
+  // id for a given score, so the whole key identifies its point.
+  static GDEL_HD std::uint32_t tie_break(std::uint32_t x, int mode, std::uint32_t score_bits) {
+    if (mode == 3) mode = score_bits == 0 ? 0 : 2;
+    if (mode == 2) return 0xffffffffu - x;
+    if (mode == 1) {  // ~bit-reverse(x): more trailing zeros, larger key
+      x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+      x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+      x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+      x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+      x = (x >> 16) | (x << 16);
+      return ~x;
+    }
     x ^= x >> 16;
     x *= 0x7feb352dU;
     x ^= x >> 15;
@@ -442,6 +461,13 @@ class GFlip3D {
     x ^= x >> 16;
     return x;
   }
+  static int tie_mode_from_env() {
+    const char* e = std::getenv("GDEL_TIE_BREAK");
+    if (!e) return kDefaultTieMode;
+    const std::string v(e);
+    return v == "hash" ? 0 : v == "dyadic" ? 1 : v == "first" ? 2 : v == "hybrid" ? 3 : kDefaultTieMode;
+  }
+  static constexpr int kDefaultTieMode = 3;
   std::int64_t insert_round() {
     MeshView m = mesh_.view();
     const Geo g = geo();
@@ -451,7 +477,10 @@ class GFlip3D {
     std::uint64_t* best = aux_best_.data();
     const InsertionRule rule = cfg_.rule;
     const double is = inv_scale_;
-    // 1. each tet keeps its best point: key = score bits << 32 | ~point
+    const int tie = tie_mode_;
+    Buffer<std::uint64_t, B> keys(ctx_, static_cast<std::size_t>(u));
+    std::uint64_t* kp = keys.data();
+    // 1. each tet keeps its best point: key = score bits << 32 | tie_break(point)
     par::parallel_for(ctx_, u, [=] GDEL_HD(std::int64_t k) {
       const vid_t q = U[k];
       const tid_t t = vt[q];
@@ -480,7 +509,8 @@ class GFlip3D {
       float f = (sc > 0 && sc < 3.0e38) ? static_cast<float>(sc) : (sc >= 3.0e38 ? 3.0e38f : 0.0f);
       std::uint32_t bits;
       std::memcpy(&bits, &f, sizeof bits);
-      std::uint64_t key = (std::uint64_t(bits) << 32) | tie_break(std::uint32_t(q));
+      std::uint64_t key = (std::uint64_t(bits) << 32) | tie_break(std::uint32_t(q), tie, bits);
+      kp[k] = key;
       par::atomic_max(best + t, key);
     });
     par::mark(ctx_, "insert: scores");
@@ -489,7 +519,7 @@ class GFlip3D {
     std::int64_t* wp = win.data();
     std::int64_t k = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(u), wp, [=] GDEL_HD(std::int64_t i) {
       const vid_t q = U[i];
-      return std::uint32_t(best[vt[q]]) == tie_break(std::uint32_t(q));
+      return best[vt[q]] == kp[i];  // the whole key: the low half alone may repeat across modes
     }));
     par::mark(ctx_, "insert: select winners");
     // 3. slots: 3 new per split (child 0 reuses the split tet's slot)
@@ -1094,6 +1124,7 @@ class GFlip3D {
   std::vector<std::int64_t> log_iters_{0};
   double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0, t_reorder_ = 0;
   bool debug_ = false;
+  int tie_mode_ = kDefaultTieMode;  // tie_break's mode
   bool trace_ = false;  // GDEL_FLIP_TRACE=1: one line per InsFlip round on stderr
   double inv_scale_ = 1.0;
 };
