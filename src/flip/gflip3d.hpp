@@ -439,7 +439,9 @@ class GFlip3D {
   //  - on the grid (equal nonzero scores) the smallest id left a triangulation the
   //    repair fixed in 0.16 s under Auto, a hash one it needed 8.8 s for.
   // So mode 3 ("hybrid", the default) takes the smallest id among equal nonzero scores
-  // and a hash of the id among zero scores. Study knob GDEL_TIE_BREAK: 0 "hash", 1
+  // and a hash of the id among zero scores. Measured afterwards on the H100 it is no
+  // better than "hash" on the grid (Auto 10.5 s) and worse on the skew lines (2 000
+  // points > 40 s): "hash" should become the default (RESULTS.md, s6hybrid). Study knob GDEL_TIE_BREAK: 0 "hash", 1
   // "dyadic" (the id with the most trailing zero bits: binary-search order along a
   // run of ids), 2 "first" (smallest id), 3 "hybrid". Every mode is a bijection of the
   // id for a given score, so the whole key identifies its point.
