@@ -441,10 +441,12 @@ class GFlip3D {
   // So mode 3 ("hybrid", the default) takes the smallest id among equal nonzero scores
   // and a hash of the id among zero scores. Measured afterwards on the H100 it is no
   // better than "hash" on the grid (Auto 10.5 s) and worse on the skew lines (2 000
-  // points > 40 s): "hash" should become the default (RESULTS.md, s6hybrid). Study knob GDEL_TIE_BREAK: 0 "hash", 1
-  // "dyadic" (the id with the most trailing zero bits: binary-search order along a
-  // run of ids), 2 "first" (smallest id), 3 "hybrid". Every mode is a bijection of the
-  // id for a given score, so the whole key identifies its point.
+  // points > 40 s): "hash" should become the default (RESULTS.md, s6hybrid).
+  // Study knob GDEL_TIE_BREAK: 0 "hash", 1 "dyadic" (the id with the most trailing zero
+  // bits: binary-search order along a run of ids), 2 "first" (smallest id), 3 "hybrid".
+  // Every mode is a bijection of the id for a given score, so the whole key identifies
+  // its point; only "hybrid" switches function with the score, which is why the winner
+  // check compares whole keys (kept per candidate in insert_round) and not low halves.
   static GDEL_HD std::uint32_t tie_break(std::uint32_t x, int mode, std::uint32_t score_bits) {
     if (mode == 3) mode = score_bits == 0 ? 0 : 2;
     if (mode == 2) return 0xffffffffu - x;
