@@ -259,6 +259,18 @@ case "$plan" in
     step gdel3d 200 "$tbin/gpu_gdel3d"
     step gflip3d 120 "$tbin/gpu_gflip3d"
     ;;
+  s7hash)  # 2026-11-25 (session 7): "hash" the default tie-break again (hybrid dropped): where the grid's
+           # repair spends its time (GDEL_SPLAY_DEBUG laps, GDEL_PROFILE steps; "first" for contrast), the
+           # skew lines, the gFlip3D / gDel3D tests, every generator at 10^6
+    export GDEL_SPLAY_DEBUG=1 GDEL_PROFILE=1
+    bench g_hash 90 --dist grid --n 1000000 --methods auto-cuda,gdel3d-cuda --repeat 1
+    GDEL_TIE_BREAK=first bench g_first 60 --dist grid --n 1000000 --methods auto-cuda --repeat 1
+    unset GDEL_SPLAY_DEBUG GDEL_PROFILE
+    bench h_skew 40 --dist skew_lines --n 2000 --methods gdel3d-cuda --repeat 1
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    bench h_e6 90 --dist uniform,gaussian,ball,thin_shell,sphere --n 1000000 --methods auto-cuda --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

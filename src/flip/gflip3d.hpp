@@ -431,24 +431,20 @@ class GFlip3D {
 
   // --- one insertion round: choose, split, relocate ---------------------------------
   // The low half of a tet's best-point key: it decides between equal scores. Equal
-  // scores are the rule on degenerate input, and the choice matters both ways (H100, 10^6
-  // grid and 2 000 skew-line points, bench/RESULTS.md 2026-11-24 session 6):
+  // scores are the rule on degenerate input, and the choice matters (H100, 10^6 grid and
+  // 2 000 skew-line points, bench/RESULTS.md 2026-11-24 session 6):
   //  - on two skew lines every candidate in a flat tet scores 0, and the smallest id
   //    (Hilbert order) inserted the points of a segment one per round, in order (400
   //    points: 170 rounds, against 12 with a hash; 2 000 points > 30 s against 7.3 s);
   //  - on the grid (equal nonzero scores) the smallest id left a triangulation the
-  //    repair fixed in 0.16 s under Auto, a hash one it needed 8.8 s for.
-  // So mode 3 ("hybrid", the default) takes the smallest id among equal nonzero scores
-  // and a hash of the id among zero scores. Measured afterwards on the H100 it is no
-  // better than "hash" on the grid (Auto 10.5 s) and worse on the skew lines (2 000
-  // points > 40 s): "hash" should become the default (RESULTS.md, s6hybrid).
-  // Study knob GDEL_TIE_BREAK: 0 "hash", 1 "dyadic" (the id with the most trailing zero
-  // bits: binary-search order along a run of ids), 2 "first" (smallest id), 3 "hybrid".
-  // Every mode is a bijection of the id for a given score, so the whole key identifies
-  // its point; only "hybrid" switches function with the score, which is why the winner
-  // check compares whole keys (kept per candidate in insert_round) and not low halves.
-  static GDEL_HD std::uint32_t tie_break(std::uint32_t x, int mode, std::uint32_t score_bits) {
-    if (mode == 3) mode = score_bits == 0 ? 0 : 2;
+  //    repair fixed in 0.16 s under Auto, a hash one it needed 8.8 s for; a hybrid (smallest
+  //    id among nonzero scores, hash among zeros) was measured no better on the grid and
+  //    worse on the skew lines, and was dropped.
+  // Default mode 0 "hash". Study knob GDEL_TIE_BREAK: "hash", "dyadic" (mode 1: the id
+  // with the most trailing zero bits wins, binary-search order along a run of ids),
+  // "first" (mode 2: smallest id). Every mode is a bijection of the id independent of the
+  // score, so the low half alone identifies the winning point (the winner check).
+  static GDEL_HD std::uint32_t tie_break(std::uint32_t x, int mode) {
     if (mode == 2) return 0xffffffffu - x;
     if (mode == 1) {  // ~bit-reverse(x): more trailing zeros, larger key
       x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
@@ -469,9 +465,9 @@ class GFlip3D {
     const char* e = std::getenv("GDEL_TIE_BREAK");
     if (!e) return kDefaultTieMode;
     const std::string v(e);
-    return v == "hash" ? 0 : v == "dyadic" ? 1 : v == "first" ? 2 : v == "hybrid" ? 3 : kDefaultTieMode;
+    return v == "hash" ? 0 : v == "dyadic" ? 1 : v == "first" ? 2 : kDefaultTieMode;
   }
-  static constexpr int kDefaultTieMode = 3;
+  static constexpr int kDefaultTieMode = 0;
   std::int64_t insert_round() {
     MeshView m = mesh_.view();
     const Geo g = geo();
@@ -482,8 +478,6 @@ class GFlip3D {
     const InsertionRule rule = cfg_.rule;
     const double is = inv_scale_;
     const int tie = tie_mode_;
-    Buffer<std::uint64_t, B> keys(ctx_, static_cast<std::size_t>(u));
-    std::uint64_t* kp = keys.data();
     // 1. each tet keeps its best point: key = score bits << 32 | tie_break(point)
     par::parallel_for(ctx_, u, [=] GDEL_HD(std::int64_t k) {
       const vid_t q = U[k];
@@ -513,9 +507,7 @@ class GFlip3D {
       float f = (sc > 0 && sc < 3.0e38) ? static_cast<float>(sc) : (sc >= 3.0e38 ? 3.0e38f : 0.0f);
       std::uint32_t bits;
       std::memcpy(&bits, &f, sizeof bits);
-      std::uint64_t key = (std::uint64_t(bits) << 32) | tie_break(std::uint32_t(q), tie, bits);
-      kp[k] = key;
-      par::atomic_max(best + t, key);
+      par::atomic_max(best + t, (std::uint64_t(bits) << 32) | tie_break(std::uint32_t(q), tie));
     });
     par::mark(ctx_, "insert: scores");
     // 2. winners
@@ -523,7 +515,7 @@ class GFlip3D {
     std::int64_t* wp = win.data();
     std::int64_t k = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(u), wp, [=] GDEL_HD(std::int64_t i) {
       const vid_t q = U[i];
-      return best[vt[q]] == kp[i];  // the whole key: the low half alone may repeat across modes
+      return std::uint32_t(best[vt[q]]) == tie_break(std::uint32_t(q), tie);
     }));
     par::mark(ctx_, "insert: select winners");
     // 3. slots: 3 new per split (child 0 reuses the split tet's slot)
