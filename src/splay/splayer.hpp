@@ -62,12 +62,12 @@ GDEL_HD inline bool sorted_contains(const U64* a, I64 n, U64 k) {
 // points only; the caller marks the star dead and stops inserting into it).
 GDEL_HD inline int insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count,
                                      std::int32_t cap, vid_t s, vid_t q, double* work, U64* out, I64& k, I64 kend,
-                                     std::int32_t* err) {
+                                     std::int32_t* err, std::int32_t* nonpos = nullptr) {
   auto record = [&](vid_t x) {
     if (k < kend) out[k++] = pair_key(s, x);
     else *err = 3;
   };
-  const int r = star_insert(g, T, S, count, cap, s, q, work, record);
+  const int r = star_insert(g, T, S, count, cap, s, q, work, record, 0, nonpos);
   if (r == kDrowned) record(q);
   else if (r != kInserted && r != kStarDead) *err = r == kStarFull ? 2 : 1;
   return r;
@@ -303,8 +303,10 @@ class Splayer {
       for (int q = 0; q < 4; ++q) first[q] = ov[a + q];
       star_simplex(g, T, S, me, first, kTriNew, work);
       std::int32_t count = 4;
+      std::int32_t nonpos = 0;
+      for (int q = 0; q < 4; ++q) nonpos += (S[q] & kTriNonPositive) ? 1 : 0;
       for (I64 i = a + 4; i < b; ++i)
-        if (insert_recording(g, T, S, count, sv.cap[s], me, ov[i], work, gp, gk, gend, ep) == kStarDead) {
+        if (insert_recording(g, T, S, count, sv.cap[s], me, ov[i], work, gp, gk, gend, ep, &nonpos) == kStarDead) {
           sv.killer[s] = ov[i];
           break;
         }
@@ -645,10 +647,12 @@ class Splayer {
       Tri* T = sv.tri + sv.begin[s];
       std::uint8_t* S = sv.state + sv.begin[s];
       std::int32_t count = sv.count[s];
+      std::int32_t nonpos = 0;
+      for (std::int32_t q = 0; q < count; ++q) nonpos += (S[q] & kTriNonPositive) ? 1 : 0;
       I64 k = rmp[j];
       const I64 kend = rmp[j + 1];
       for (I64 i = a; i < b; ++i)
-        if (insert_recording(g, T, S, count, sv.cap[s], sv_vert, key_vertex(rp[i]), work, gp, k, kend, ep) ==
+        if (insert_recording(g, T, S, count, sv.cap[s], sv_vert, key_vertex(rp[i]), work, gp, k, kend, ep, &nonpos) ==
             kStarDead) {
           sv.killer[s] = key_vertex(rp[i]);
           break;

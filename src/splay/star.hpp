@@ -125,73 +125,82 @@ GDEL_HD inline void star_move(Tri* T, std::uint8_t* S, std::int32_t from, std::i
   S[from] = kTriFree;
 }
 
-// Beneath-beyond insertion of q into the convex star of s (§4.5). Marks the beyond
-// triangles, walks the boundary of that disk creating the fan (q, u, v) in fresh
-// slots past `count`, reports the link vertices that leave the star (submerged) to
-// `gone(x)`, then closes the holes. Needs cap >= 2 * count + 2. Returns an InsertResult.
+// Beneath-beyond insertion of q into the convex star of s (§4.5). Finds one beyond
+// triangle (walk, or scan), floods the beyond set (a disk), walks its boundary creating
+// the fan (q, u, v) in fresh slots past `count`, reports the link vertices that leave the
+// star (submerged) to `gone(x)`, then closes the holes. Needs cap >= 2 * count + 2.
+// Returns an InsertResult. Apart from the locating scan, the work is O(beyond set + fan),
+// not O(count): one thread may own a star of thousands of triangles (a point on a
+// coplanar hull face), and on a GPU every pass over it costs a dependent load per slot.
+// `nonpos` (optional, in/out): the number of triangles flagged kTriNonPositive, kept by a
+// caller that inserts many points into one star; without it that count is a scan.
 template <class Gone>
 GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap, vid_t s,
-                        vid_t q, double* work, Gone gone, std::int32_t hint = 0) {
-  std::int32_t r = 0, first = -1;
+                        vid_t q, double* work, Gone gone, std::int32_t hint = 0, std::int32_t* nonpos = nullptr) {
+  std::int32_t np = 0;
+  if (nonpos) np = *nonpos;
+  else
+    for (std::int32_t i = 0; i < count; ++i) np += (S[i] & kTriNonPositive) ? 1 : 0;
   // Fast path (every tet of the star positive in 3-D, q finite): locate the triangle
   // whose cone holds q's direction; if q conflicts with any tet of s it conflicts with
   // that one (the segment sq becomes a Delaunay edge, so the old tets it crosses are in
-  // conflict), so "not beyond" there means drowned; else flood the beyond set from it.
-  bool fast = q != g.inf && count > 0;
-  for (std::int32_t i = 0; i < count && fast; ++i) fast = (S[i] & kTriNonPositive) == 0;
+  // conflict), so "not beyond" there means drowned.
   std::int32_t t = -1;
-  if (fast) {
+  if (q != g.inf && count > 0 && np == 0) {
     t = star_locate(g, T, count, s, q, hint >= 0 && hint < count ? hint : 0, work);
-    fast = t >= 0;
+    if (t >= 0 && star_side(g, T[t], s, q, work) <= 0) return kDrowned;
   }
-  if (fast) {
-    if (star_side(g, T[t], s, q, work) <= 0) return kDrowned;
-    // flood fill; the stack lives in the free slots past `count` (cap >= 2 count + 2
-    // slots of 6 ints each hold far more than count entries)
-    std::int32_t* stack = reinterpret_cast<std::int32_t*>(T + count);
-    std::int32_t top = 0;
-    S[t] |= kTriBeyond;
-    r = 1;
-    first = t;
-    stack[top++] = t;
-    while (top > 0) {
-      const std::int32_t x = stack[--top];
-      for (int k = 0; k < 3; ++k) {
-        const std::int32_t y = T[x].adj[k] >> 2;
-        if (S[y] & (kTriBeyond | kTriTested)) continue;
-        if (star_side(g, T[y], s, q, work) > 0) {
-          S[y] |= kTriBeyond;
-          ++r;
-          if (y < first) first = y;
-          stack[top++] = y;
-        } else {
-          S[y] |= kTriTested;
-        }
+  if (t < 0) {
+    // No walk (a tet of the star is flat or negative in 3-D, or q is ∞): scan for one
+    // beyond triangle, newest slots first (in a growing star the newest triangles are the
+    // frontier the next point, nearest first, sees). None beyond: drowned.
+    for (std::int32_t i = count - 1; i >= 0 && t < 0; --i)
+      if (star_side(g, T[i], s, q, work) > 0) t = i;
+    if (t < 0) return kDrowned;
+  }
+  // Flood fill of the beyond set (the facets of a convex cone that q sees: a disk). The
+  // beyond triangles are listed (BFS order) at the top of the free slots, growing down
+  // from slot `cap`: cap - count >= count + 2 slots of 6 ints hold every triangle.
+  std::int32_t* list = reinterpret_cast<std::int32_t*>(T + cap);
+  std::int32_t r = 0;
+  auto at = [&](std::int32_t i) -> std::int32_t& { return list[-1 - i]; };
+  S[t] |= kTriBeyond;
+  at(r++) = t;
+  for (std::int32_t h = 0; h < r; ++h) {
+    const std::int32_t x = at(h);
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t y = T[x].adj[k] >> 2;
+      if (S[y] & (kTriBeyond | kTriTested)) continue;
+      if (star_side(g, T[y], s, q, work) > 0) {
+        S[y] |= kTriBeyond;
+        at(r++) = y;
+      } else {
+        S[y] |= kTriTested;
       }
     }
-    for (std::int32_t i = 0; i < count; ++i) S[i] &= std::uint8_t(~kTriTested);
-  } else {
-    for (std::int32_t i = 0; i < count; ++i) {
-      if (star_side(g, T[i], s, q, work) > 0) {
-        S[i] |= kTriBeyond;
-        ++r;
-        if (first < 0) first = i;
-      }
-    }
-    if (r == 0) return kDrowned;
   }
-  auto restore = [&] {
-    for (std::int32_t i = 0; i < count; ++i)
-      S[i] &= std::uint8_t(~kTriBeyond);
+  for (std::int32_t h = 0; h < r; ++h)  // the tested ones are the beyond set's neighbours
+    for (int k = 0; k < 3; ++k) S[T[at(h)].adj[k] >> 2] &= std::uint8_t(~kTriTested);
+  // the beyond triangles: from the list, or (once the fan needs the list's slots) by a
+  // scan, which costs O(count) = O(r) only in that case
+  bool listed = true;
+  auto each_beyond = [&](auto&& f) {
+    if (listed) {
+      for (std::int32_t h = 0; h < r; ++h) f(at(h));
+    } else {
+      for (std::int32_t i = 0; i < count; ++i)
+        if (is_beyond(S[i])) f(i);
+    }
   };
+  auto restore = [&] { each_beyond([&](std::int32_t i) { S[i] &= std::uint8_t(~kTriBeyond); }); };
   if (r == count) {
     restore();
     return g.w ? kStarDead : kStarBroken;
   }
   // a boundary edge (a beyond triangle with a non-beyond neighbour), and their number
   std::int32_t t0 = -1, k0 = -1, edges = 0;
-  for (std::int32_t i = first; i < count; ++i) {
-    if (!is_beyond(S[i])) continue;
+  for (std::int32_t h = 0; h < r; ++h) {
+    const std::int32_t i = at(h);
     for (int k = 0; k < 3; ++k)
       if (!is_beyond(S[T[i].adj[k] >> 2])) {
         ++edges;
@@ -205,17 +214,23 @@ GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_
     restore();
     return kStarBroken;
   }
+  // the fan fills slots [count, count + edges); the list must stay clear of it
+  if (count + edges > cap) {
+    restore();
+    return kStarFull;
+  }
+  if (count + edges + (r + 5) / 6 > cap) listed = false;
   // walk the hole boundary; boundary edge j = (u_j, v_j) with v_j = u_{j+1}
   std::int32_t nb = 0;
   std::int32_t cur = t0, ck = k0;
-  const std::int32_t guard = 3 * r + 3;
+  auto drop_fan = [&] {
+    for (std::int32_t j = 0; j < nb; ++j) S[count + j] = kTriFree;
+    restore();
+  };
   do {
-    if (count + nb >= cap || nb > guard) {
-      // undo: drop the fan built so far (outside back-references are rewritten below
-      // only on success, so nothing outside changed yet)
-      for (std::int32_t j = 0; j < nb; ++j) S[count + j] = kTriFree;
-      restore();
-      return count + nb >= cap ? kStarFull : kStarBroken;
+    if (nb >= edges) {  // more boundary steps than boundary edges: not a disk
+      drop_fan();
+      return kStarBroken;
     }
     const std::int32_t slot = count + nb;
     Tri& n = T[slot];
@@ -227,28 +242,26 @@ GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_
     ++nb;
     // next boundary edge: rotate around v = n.v[2] through beyond triangles
     const vid_t v = n.v[2];
-    std::int32_t t = cur;
+    std::int32_t tt = cur;
     int p = (ck + 2) % 3;
     for (std::int32_t steps = 0;; ++steps) {
-      const int e = (p + 2) % 3;  // edge (v, next vertex) of t
-      const std::int32_t a = T[t].adj[e];
+      const int e = (p + 2) % 3;  // edge (v, next vertex) of tt
+      const std::int32_t a = T[tt].adj[e];
       if (!is_beyond(S[a >> 2])) {
-        cur = t;
+        cur = tt;
         ck = e;
         break;
       }
-      t = a >> 2;
-      p = tri_pos(T[t], v);
+      tt = a >> 2;
+      p = tri_pos(T[tt], v);
       if (p < 0 || steps > r) {
-        for (std::int32_t j = 0; j < nb; ++j) S[count + j] = kTriFree;
-        restore();
+        drop_fan();
         return kStarBroken;
       }
     }
   } while (!(cur == t0 && ck == k0));
   if (nb != edges) {  // the beyond set is not a disk: the star was not convex
-    for (std::int32_t j = 0; j < nb; ++j) S[count + j] = kTriFree;
-    restore();
+    drop_fan();
     return kStarBroken;
   }
   // fan adjacency and outside back-references
@@ -258,35 +271,41 @@ GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_
     n.adj[2] = ((count + (j + nb - 1) % nb) << 2) | 1;
     const std::int32_t a = n.adj[0];
     T[a >> 2].adj[a & 3] = ((count + j) << 2) | 0;
+    np += (S[count + j] & kTriNonPositive) ? 1 : 0;
   }
-  // submerged link vertices: on a beyond triangle, not on the boundary
-  for (std::int32_t i = 0; i < count; ++i) {
-    if (!is_beyond(S[i])) continue;
+  // submerged link vertices: on a beyond triangle, not on the boundary; each reported
+  // once, from the triangle of smallest slot around it (all of them are beyond)
+  auto smallest_around = [&](std::int32_t i, vid_t x) {
+    std::int32_t m = i, c = i;
+    for (std::int32_t steps = 0; steps <= r; ++steps) {
+      c = T[c].adj[(tri_pos(T[c], x) + 2) % 3] >> 2;  // across edge (x, next vertex)
+      if (c == i) break;
+      if (c < m) m = c;
+    }
+    return m;
+  };
+  each_beyond([&](std::int32_t i) {
+    np -= (S[i] & kTriNonPositive) ? 1 : 0;
     for (int k = 0; k < 3; ++k) {
       const vid_t x = T[i].v[k];
       bool on_boundary = false;
       for (std::int32_t j = 0; j < nb && !on_boundary; ++j) on_boundary = T[count + j].v[1] == x;
-      if (on_boundary) continue;
-      bool seen = false;  // report once: from the first beyond triangle around x
-      for (std::int32_t j = 0; j < i && !seen; ++j) seen = is_beyond(S[j]) && tri_pos(T[j], x) >= 0;
-      if (!seen) gone(x);
+      if (!on_boundary && smallest_around(i, x) == i) gone(x);
     }
-  }
-  // close the holes: move the last valid triangles into the beyond slots
-  std::int32_t lo = 0, hi = count + nb - 1;
-  for (;;) {
-    while (lo < hi && !is_beyond(S[lo])) ++lo;
-    while (hi > lo && is_beyond(S[hi])) {
-      S[hi] = kTriFree;
-      --hi;
-    }
-    if (lo >= hi) break;
-    star_move(T, S, hi, lo);
-    --hi;
-  }
+  });
+  // close the holes: live triangles at or past nc move into the beyond slots below nc
+  // (as many of each: both are r minus the beyond slots in [nc, count))
   const std::int32_t nc = count - r + nb;
+  std::int32_t src = nc;
+  each_beyond([&](std::int32_t i) {
+    if (i >= nc) return;
+    while (is_beyond(S[src])) ++src;
+    star_move(T, S, src, i);
+    ++src;
+  });
   for (std::int32_t i = nc; i < count + nb; ++i) S[i] = kTriFree;
   count = nc;
+  if (nonpos) *nonpos = np;
   return kInserted;
 }
 
