@@ -271,6 +271,15 @@ case "$plan" in
     step gflip3d 120 "$tbin/gpu_gflip3d"
     bench h_e6 90 --dist uniform,gaussian,ball,thin_shell,sphere --n 1000000 --methods auto-cuda --repeat 1
     ;;
+  s7star)  # star insertion with O(beyond + fan) bookkeeping: the grid's huge hull-vertex star (repair laps), every
+           # generator at 10^6, then the tests of everything that inserts into stars (gDel3D incl. issue 4's
+           # sizes 10^4..10^6, gStar4D, gReg3D)
+    GDEL_SPLAY_DEBUG=1 bench s_grid 60 --dist grid --n 1000000 --methods auto-cuda,gdel3d-cuda --repeat 1
+    bench s_e6 60 --dist uniform,gaussian,ball,thin_shell,sphere --n 1000000 --methods auto-cuda --repeat 1
+    step gdel3d 240 "$tbin/gpu_gdel3d"
+    step gstar4d 150 "$tbin/gpu_gstar4d"
+    step greg3d 100 "$tbin/gpu_greg3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
