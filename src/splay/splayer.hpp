@@ -26,6 +26,8 @@
 #include <functional>
 #include <cstdint>
 #include <stdexcept>
+#include <thread>
+#include <atomic>
 #include <vector>
 
 #include "parallel/atomic.hpp"
@@ -71,6 +73,28 @@ GDEL_HD inline int insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S,
   if (r == kDrowned) record(q);
   else if (r != kInserted && r != kStarDead) *err = r == kStarFull ? 2 : 1;
   return r;
+}
+
+// One star of Splayer::build_stars: the 4-simplex of the first four points of ov, then
+// beneath-beyond insertion of the others (∞ first, nearest first), gone pairs recorded in
+// gp[*gk, gend). Host and device (the CUDA backend builds huge stars on the host).
+GDEL_HD inline void build_one_star(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
+                                   const vid_t* ov, I64 len, double* work, U64* gp, I64& gk, I64 gend,
+                                   std::int32_t* err, vid_t* killer, std::int32_t* count_out) {
+  if (len < 4) {
+    *err = 7;
+    return;
+  }
+  star_simplex(g, T, S, me, ov, kTriNew, work);
+  std::int32_t count = 4;
+  std::int32_t nonpos = 0;
+  for (int q = 0; q < 4; ++q) nonpos += (S[q] & kTriNonPositive) ? 1 : 0;
+  for (I64 i = 4; i < len; ++i)
+    if (insert_recording(g, T, S, count, cap, me, ov[i], work, gp, gk, gend, err, &nonpos) == kStarDead) {
+      *killer = ov[i];
+      break;
+    }
+  *count_out = count;
 }
 
 // Plain pointers to the stars, for kernels.
@@ -286,37 +310,143 @@ class Splayer {
     const StarView sv = view();
     const flip::Geo g = g_;
     std::int32_t* ep = error_.data();
+    // On the CUDA backend a star with a huge working set (a point on a coplanar hull face:
+    // thousands of link vertices, every predicate degenerate) would be built by one GPU
+    // thread at tens of µs per exact, symbolically perturbed test (bench/RESULTS.md
+    // 2026-11-25: 7.3 s for one 1 845-point star on the H100). Those few stars are built
+    // on the host's cores instead, with the same code, while the kernel builds the rest.
+    const I64 host_min = host_build_min();
+    std::vector<I64> huge;
+    if (host_min < (I64(1) << 62)) {
+      Buffer<I64, B> hj(ctx_, static_cast<std::size_t>(std::max<I64>(k, 1)));
+      const std::size_t nh = par::select_indices(ctx_, static_cast<std::size_t>(k), hj.data(),
+                                                 [=] GDEL_HD(I64 j) { return lhp[j + 1] - lhp[j] > host_min; });
+      if (nh > 0) {
+        hj.resize(nh);
+        huge = hj.to_host();
+      }
+    }
+    HostJobs hjobs;
+    if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov);
     par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
       const I64 s = s0 + j;
-      const vid_t me = gvp[j];
       const I64 a = lhp[j], b = lhp[j + 1];
-      Tri* T = sv.tri + sv.begin[s];
-      std::uint8_t* S = sv.state + sv.begin[s];
-      I64 gk = rmp[j];
-      const I64 gend = rmp[j + 1];
       up[j] = 0;
-      if (b - a < 4) {
-        ep[0] = 7;
-        return;
-      }
-      vid_t first[4];
-      for (int q = 0; q < 4; ++q) first[q] = ov[a + q];
-      star_simplex(g, T, S, me, first, kTriNew, work);
-      std::int32_t count = 4;
-      std::int32_t nonpos = 0;
-      for (int q = 0; q < 4; ++q) nonpos += (S[q] & kTriNonPositive) ? 1 : 0;
-      for (I64 i = a + 4; i < b; ++i)
-        if (insert_recording(g, T, S, count, sv.cap[s], me, ov[i], work, gp, gk, gend, ep, &nonpos) == kStarDead) {
-          sv.killer[s] = ov[i];
-          break;
-        }
-      sv.count[s] = count;
+      if (b - a > host_min) return;  // built on the host
+      I64 gk = rmp[j];
+      build_one_star(g, sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s], gvp[j], ov + a, b - a, work, gp, gk,
+                     rmp[j + 1], ep, sv.killer + s, sv.count + s);
       up[j] = gk - rmp[j];
     });
+    if (!huge.empty()) run_host_jobs(hjobs, gp, up);  // while the kernel runs; then writes back
     throw_if_error("building stars");
     gone = pack_pairs(gp, rmp, up, k);
     certify_deaths();
     return s0;
+  }
+
+  // build_stars' huge stars (indices j of its groups) on the host: the points (and
+  // weights) and each star's inputs come to host memory (host_jobs, before the kernel for
+  // the other stars is launched), build_one_star runs there, one host thread per star, while
+  // that kernel runs, and the triangles, count, killer and gone pairs go back
+  // (run_host_jobs). A stage of the repair moved from the GPU to the host: docs/gdel3d.md.
+  static constexpr I64 kHostBuildMin = 512;
+  // Working sets above this go to the host: kHostBuildMin on the CUDA backend, never on the
+  // CPU backend; GDEL_HOST_STAR_MIN=N sets it on both (tests run the host path on the CPU).
+  static I64 host_build_min() {
+    if (const char* e = std::getenv("GDEL_HOST_STAR_MIN")) return std::max<I64>(4, std::atoll(e));
+    return B::is_device ? kHostBuildMin : I64(1) << 62;
+  }
+  struct HostJob {
+    I64 j = 0, s = 0, a = 0, b = 0, g0 = 0, g1 = 0, begin = 0;
+    std::int32_t cap = 0, count = 0, err = 0;
+    vid_t me = -1, killer = -1;
+    std::vector<vid_t> pts;
+    std::vector<Tri> T;
+    std::vector<std::uint8_t> S;
+    std::vector<U64> gone;
+    I64 used = 0;
+  };
+  struct HostJobs {
+    std::vector<double> xyz, w;
+    std::vector<std::int64_t> sid;
+    flip::Geo g{};
+    std::vector<HostJob> jobs;
+  };
+  template <class T>
+  void get(T* dst, const T* src, std::size_t count) {
+    par::detail::Memory<B>::to_host(ctx_, dst, src, count * sizeof(T));
+  }
+  template <class T>
+  void put(T* dst, const T* src, std::size_t count) {
+    par::detail::Memory<B>::from_host(ctx_, dst, src, count * sizeof(T));
+  }
+  HostJobs host_jobs(const std::vector<I64>& huge, I64 s0, const I64* lhp, const I64* rmp, const vid_t* gvp,
+                     const vid_t* ov) {
+    HostJobs H;
+    const std::size_t np = static_cast<std::size_t>(g_.inf) + 1;  // n points and K
+    H.xyz.resize(3 * np);
+    H.sid.resize(np);
+    get(H.xyz.data(), g_.xyz, 3 * np);
+    get(H.sid.data(), g_.sid, np);
+    H.g = g_;
+    H.g.xyz = H.xyz.data();
+    H.g.sid = H.sid.data();
+    if (g_.w) {
+      H.w.resize(np);
+      get(H.w.data(), g_.w, np);
+      H.g.w = H.w.data();
+    }
+    const StarView sv = view();
+    H.jobs.resize(huge.size());
+    for (std::size_t h = 0; h < huge.size(); ++h) {
+      HostJob& J = H.jobs[h];
+      J.j = huge[h];
+      J.s = s0 + J.j;
+      get(&J.a, lhp + J.j, 1);
+      get(&J.b, lhp + J.j + 1, 1);
+      get(&J.g0, rmp + J.j, 1);
+      get(&J.g1, rmp + J.j + 1, 1);
+      get(&J.begin, static_cast<const I64*>(sv.begin + J.s), 1);
+      get(&J.cap, static_cast<const std::int32_t*>(sv.cap + J.s), 1);
+      get(&J.me, gvp + J.j, 1);
+      J.pts.resize(static_cast<std::size_t>(J.b - J.a));
+      get(J.pts.data(), ov + J.a, J.pts.size());
+      J.T.resize(static_cast<std::size_t>(J.cap));
+      J.S.assign(static_cast<std::size_t>(J.cap), std::uint8_t(kTriFree));
+      J.gone.resize(static_cast<std::size_t>(std::max<I64>(J.g1 - J.g0, 1)));
+    }
+    return H;
+  }
+  void run_host_jobs(HostJobs& H, U64* gp, I64* up) {
+    const flip::Geo& hg = H.g;
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      std::vector<double> work(geom::kPredicateWork);
+      for (std::size_t h; (h = next.fetch_add(1)) < H.jobs.size();) {
+        HostJob& J = H.jobs[h];
+        I64 gk = 0;
+        build_one_star(hg, J.T.data(), J.S.data(), J.cap, J.me, J.pts.data(), static_cast<I64>(J.pts.size()),
+                       work.data(), J.gone.data(), gk, J.g1 - J.g0, &J.err, &J.killer, &J.count);
+        J.used = gk;
+      }
+    };
+    const std::size_t nthreads =
+        std::min<std::size_t>(H.jobs.size(), std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> threads;
+    for (std::size_t t = 1; t < nthreads; ++t) threads.emplace_back(worker);
+    worker();
+    for (std::thread& t : threads) t.join();
+    const StarView sv = view();
+    for (HostJob& J : H.jobs) {
+      put(sv.tri + J.begin, J.T.data(), J.T.size());
+      put(sv.state + J.begin, J.S.data(), J.S.size());
+      put(sv.count + J.s, &J.count, 1);
+      if (J.killer >= 0) put(sv.killer + J.s, &J.killer, 1);
+      if (J.used > 0) put(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used));
+      put(up + J.j, &J.used, 1);
+      if (J.err != 0) put(error_.data(), &J.err, 1);
+    }
   }
 
   // Runs splaying rounds from the given requests (keys pair_key(target, vertex), any

@@ -65,6 +65,25 @@ inline void gdel3d_scale_cases(Backend b, std::initializer_list<std::size_t> siz
     }
 }
 
+// The repair's host build of huge stars (Splayer::build_on_host; on the CUDA backend for
+// working sets over 512 points) gives the same triangulation as the in-kernel build: forced
+// here for every star over 8 points (GDEL_HOST_STAR_MIN), on grid and sphere points.
+inline void gdel3d_host_star_case(Backend b) {
+  for (auto d : {gen::Distribution::Grid, gen::Distribution::Sphere}) {
+    SCOPED_TRACE(std::string(gen::to_string(d)));
+    auto pts = gen::generate(d, d == gen::Distribution::Grid ? 100000 : 10000, 31);
+    Options o;
+    o.backend = b;
+    Triangulation base = delaunay(pts, o);
+    ::setenv("GDEL_HOST_STAR_MIN", "8", 1);
+    Triangulation host = delaunay(pts, o);
+    ::unsetenv("GDEL_HOST_STAR_MIN");
+    expect_exact_delaunay(pts, host, b);
+    EXPECT_EQ(host.tets, base.tets);
+    EXPECT_EQ(host.neighbors, base.neighbors);
+  }
+}
+
 // Two skew lines (gen::skew_lines: a points on the x axis at z = 0, b on the line x = 0,
 // z = 1): the Delaunay triangulation is unique and known. No sphere holds 3 points of a
 // line, so no 5 points are cospherical, and a tet with 3 points on one line is flat: the

@@ -14,3 +14,4 @@ TEST(GDel3DCpu, LargerSphereAndGrid) {
 // Issue 4's sizes on the CPU backend: every generator but the skew lines at 10^4, 10^5 and
 // 10^6 (about 5 minutes on 2 cores; the skew lines: SkewLines above).
 TEST(GDel3DCpu, AllGeneratorsAtScale) { gdel::test::gdel3d_scale_cases(gdel::Backend::Cpu, {10000, 100000, 1000000}); }
+TEST(GDel3DCpu, HostBuiltStarsSameResult) { gdel::test::gdel3d_host_star_case(gdel::Backend::Cpu); }

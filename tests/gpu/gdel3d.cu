@@ -5,3 +5,4 @@ TEST(GDel3DGpu, SkewLines) { gdel::test::gdel3d_skew_lines_case(gdel::Backend::C
 TEST(GDel3DGpu, Degenerate) { gdel::test::gdel3d_degenerate_cases(gdel::Backend::Cuda); }
 // Issue 4's sizes: every generator but the skew lines (SkewLines above) at 10^4, 10^5, 10^6.
 TEST(GDel3DGpu, AllGeneratorsAtScale) { gdel::test::gdel3d_scale_cases(gdel::Backend::Cuda, {10000, 100000, 1000000}); }
+TEST(GDel3DGpu, HostBuiltStarsSameResult) { gdel::test::gdel3d_host_star_case(gdel::Backend::Cuda); }
