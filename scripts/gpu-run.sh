@@ -280,6 +280,15 @@ case "$plan" in
     step gstar4d 150 "$tbin/gpu_gstar4d"
     step greg3d 100 "$tbin/gpu_greg3d"
     ;;
+  s7host)  # huge failed stars (working set > 512) built on the host: the grid's repair laps, every generator
+           # at 10^6 with CGAL in the same run, and the tests of everything that builds stars
+    GDEL_SPLAY_DEBUG=1 bench h_grid 60 --dist grid --n 1000000 --methods auto-cuda,gdel3d-cuda --repeat 1
+    bench h_e6 120 --dist grid,uniform,gaussian,ball,thin_shell --n 1000000 --methods auto-cuda,cgal,cgal-par --repeat 1
+    bench h_sphere 90 --dist sphere --n 1000000 --methods auto-cuda,cgal,cgal-par --repeat 1
+    step gdel3d 240 "$tbin/gpu_gdel3d"
+    step gstar4d 120 "$tbin/gpu_gstar4d"
+    step greg3d 100 "$tbin/gpu_greg3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
