@@ -289,6 +289,15 @@ case "$plan" in
     step gstar4d 120 "$tbin/gpu_gstar4d"
     step greg3d 100 "$tbin/gpu_greg3d"
     ;;
+  s7min)  # where the grid's failed-star build spends its time: the host-build threshold GDEL_HOST_STAR_MIN swept
+    export GDEL_SPLAY_DEBUG=1
+    for m in 1000000 2048 512 128 32; do
+      GDEL_HOST_STAR_MIN=$m bench "m_$m" 40 --dist grid --n 1000000 --methods gdel3d-cuda --repeat 1
+    done
+    GDEL_HOST_STAR_MIN=32 bench m_32_sphere 40 --dist sphere --n 1000000 --methods gdel3d-cuda --repeat 1
+    bench m_def_sphere 40 --dist sphere --n 1000000 --methods gdel3d-cuda --repeat 1
+    unset GDEL_SPLAY_DEBUG
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

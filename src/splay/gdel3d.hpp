@@ -207,25 +207,73 @@ class GDel3D {
     // stars s0 + j, j in [0, k): group j of lk and of inc are the same vertex (both sorted)
     const I64 s0 = sp_.build_stars(lk, gone);
     res_.stars_built = k;
-    // rebuilt triangles that are tets of T need no check
+    // rebuilt triangles that are tets of T need no check: per star, T's link triangles
+    // in canonical form, sorted (one thread per star: heap sort), then a binary search per
+    // star triangle — O((m + k) log m), not O(m k): a star of a point on a coplanar hull
+    // face has thousands of both (bench/RESULTS.md 2026-11-25)
     const StarView sv = sp_.view();
+    Buffer<LinkKey, B> lkeys(ctx_, static_cast<std::size_t>(std::max<I64>(ni, 1)));
+    LinkKey* lkp = lkeys.data();
     par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
       const I64 s = s0 + j;
       const vid_t me = sv.vert[s];
       Tri* T = sv.tri + sv.begin[s];
       std::uint8_t* S = sv.state + sv.begin[s];
-      const I64 ta = ihp[j], tb = ihp[j + 1];
+      const I64 ta = ihp[j], m = ihp[j + 1] - ta;
+      LinkKey* C = lkp + ta;
+      for (I64 q = 0; q < m; ++q) {
+        Tri lt;
+        link_triangle(mv, key_vertex(ip[ta + q]), me, lt);
+        C[q] = LinkKey::of(lt.v);
+      }
+      heap_sort(C, m);
       for (std::int32_t i = 0; i < sv.count[s]; ++i) {
-        bool in_t = false;
-        for (I64 q = ta; q < tb && !in_t; ++q) {
-          Tri lt;
-          link_triangle(mv, key_vertex(ip[q]), me, lt);
-          const int p = tri_pos(lt, T[i].v[0]);
-          in_t = p >= 0 && lt.v[(p + 1) % 3] == T[i].v[1] && lt.v[(p + 2) % 3] == T[i].v[2];
+        const LinkKey x = LinkKey::of(T[i].v);
+        I64 lo = 0, hi = m;
+        while (lo < hi) {
+          const I64 mid = (lo + hi) / 2;
+          if (C[mid] < x) lo = mid + 1;
+          else hi = mid;
         }
-        set_kind(S[i], in_t ? kTriChecked : kTriNew);
+        set_kind(S[i], (lo < m && C[lo] == x) ? kTriChecked : kTriNew);
       }
     });
+  }
+
+  // An oriented link triangle rotated so that its smallest vertex comes first: equal
+  // keys, same oriented triangle.
+  struct LinkKey {
+    vid_t v[3];
+    GDEL_HD static LinkKey of(const vid_t* t) {
+      const int r = (t[0] < t[1]) ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
+      return LinkKey{{t[r], t[(r + 1) % 3], t[(r + 2) % 3]}};
+    }
+    GDEL_HD bool operator<(const LinkKey& o) const {
+      return v[0] != o.v[0] ? v[0] < o.v[0] : v[1] != o.v[1] ? v[1] < o.v[1] : v[2] < o.v[2];
+    }
+    GDEL_HD bool operator==(const LinkKey& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
+  };
+  // In-place heap sort of n keys (one thread; no recursion, no extra memory).
+  GDEL_HD static void heap_sort(LinkKey* A, I64 n) {
+    auto sift = [A](I64 root, I64 end) {
+      for (;;) {
+        I64 c = 2 * root + 1;
+        if (c >= end) return;
+        if (c + 1 < end && A[c] < A[c + 1]) ++c;
+        if (!(A[root] < A[c])) return;
+        const LinkKey t = A[root];
+        A[root] = A[c];
+        A[c] = t;
+        root = c;
+      }
+    };
+    for (I64 i = n / 2 - 1; i >= 0; --i) sift(i, n);
+    for (I64 end = n - 1; end > 0; --end) {
+      const LinkKey t = A[0];
+      A[0] = A[end];
+      A[end] = t;
+      sift(0, end);
+    }
   }
 
   // Steps 1-3.
