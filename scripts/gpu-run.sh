@@ -298,6 +298,11 @@ case "$plan" in
     bench m_def_sphere 40 --dist sphere --n 1000000 --methods gdel3d-cuda --repeat 1
     unset GDEL_SPLAY_DEBUG
     ;;
+  s7fix)  # after the sorted in-T check of rebuilt stars: grid laps, every generator at 10^6, the gDel3D tests
+    GDEL_SPLAY_DEBUG=1 bench f_grid 60 --dist grid --n 1000000 --methods auto-cuda,gdel3d-cuda --repeat 1
+    bench f_e6 90 --dist uniform,gaussian,ball,thin_shell,sphere,grid --n 1000000 --methods auto-cuda --repeat 3
+    step gdel3d 240 "$tbin/gpu_gdel3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
