@@ -303,6 +303,14 @@ case "$plan" in
     bench f_e6 90 --dist uniform,gaussian,ball,thin_shell,sphere,grid --n 1000000 --methods auto-cuda --repeat 3
     step gdel3d 240 "$tbin/gpu_gdel3d"
     ;;
+  s8ff)  # Flip-Flop convexification of failed stars vs their rebuild; the gDel3D tests; the models
+    GDEL_SPLAY_DEBUG=1 bench ff_laps 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda --repeat 1
+    bench ff_e6 100 --dist uniform,gaussian,ball,thin_shell,sphere,grid --n 1000000 --methods auto-cuda --repeat 3
+    GDEL_STAR_BUILD=rebuild bench rb_e6 100 --dist uniform,gaussian,ball,thin_shell,sphere,grid --n 1000000 \
+      --methods auto-cuda --repeat 3
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step models 100 "$tbin/gpu_models"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -102,11 +102,13 @@ struct Stats {
   // not), and the facets (∞'s included) not locally Delaunay when flipping first got
   // stuck and in the triangulation kept (fewest seen); all 0 without the option
   std::int64_t nonoptimal_rounds = 0, nonoptimal_flips = 0, nonld_facets_stuck = 0, nonld_facets_kept = 0;
-  // gdel3d repair: vertices gFlip3D left failing (their stars are rebuilt), stars pulled
-  // from the triangulation on demand, splaying rounds, star insertions attempted, flat
-  // tets (exact zero volume, on coplanar hull faces) dropped from the output
-  std::int64_t repair_failed_vertices = 0, stars_built = 0, stars_pulled = 0, splay_rounds = 0,
-               splay_insertions = 0, flat_tets_removed = 0;
+  // gdel3d repair: vertices gFlip3D left failing (their stars are made convex), of those
+  // stars the ones Flip-Flop convexified and the ones rebuilt by beneath-beyond insertion
+  // (where Flip-Flop gave up, or all with GDEL_STAR_BUILD=rebuild), stars pulled from the
+  // triangulation on demand, splaying rounds, star insertions attempted, flat tets (exact
+  // zero volume, on coplanar hull faces) dropped from the output
+  std::int64_t repair_failed_vertices = 0, stars_built = 0, stars_flipflop = 0, stars_rebuilt = 0,
+               stars_pulled = 0, splay_rounds = 0, splay_insertions = 0, flat_tets_removed = 0;
   // gstar4d (or Options::initial = grid: its coarse grid): grid side; gstar4d: candidate
   // pairs in the working sets, and whether the exact
   // certificate of its result failed so that gdel3d recomputed it (0 or 1)

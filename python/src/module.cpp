@@ -129,6 +129,8 @@ nb::dict stats_dict(const gdel::Stats& s) {
   d["failed_vertices"] = s.failed_vertices;
   d["repair_failed_vertices"] = s.repair_failed_vertices;
   d["stars_built"] = s.stars_built;
+  d["stars_flipflop"] = s.stars_flipflop;
+  d["stars_rebuilt"] = s.stars_rebuilt;
   d["stars_pulled"] = s.stars_pulled;
   d["splay_rounds"] = s.splay_rounds;
   d["splay_insertions"] = s.splay_insertions;

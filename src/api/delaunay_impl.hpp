@@ -144,6 +144,8 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     st.exact_evaluations += r.exact_evaluations;
     st.repair_failed_vertices = r.failed;
     st.stars_built = r.stars_built;
+    st.stars_flipflop = r.splay.flipflop;
+    st.stars_rebuilt = r.splay.rebuilt;
     st.stars_pulled = r.splay.stars_pulled;
     st.splay_rounds = r.splay.rounds;
     st.splay_insertions = r.splay.insertions;

@@ -4,10 +4,11 @@
 //
 //  1. failed vertices: the vertices of facets of T (∞ included) that are not locally
 //     Delaunay under Geo::orient4;
-//  2. their stars are rebuilt convex by beneath-beyond insertion of their T-neighbours
-//     (this replaces the original's Flip-Flop convexification of the T-star: same
-//     result, a convex star over the same points; drowned neighbours start proofs);
-//     a rebuilt triangle that is a tet of T is known consistent and not checked;
+//  2. their stars are made convex: taken from T as they are and convexified by
+//     Flip-Flop (splay/flipflop.hpp, §4.3), or, where Flip-Flop gives up, rebuilt by
+//     beneath-beyond insertion of their T-neighbours (the same convex star over the same
+//     points); neighbours left outside start proofs; a triangle of the convex star that
+//     is a tet of T is known consistent and not checked;
 //  3. splaying rounds (splay/splayer.hpp); a star a request targets is pulled from T;
 //  4. output: tets of T none of whose vertices has a star, plus each tet of the stars
 //     once (from its smallest vertex that has a star); tets with ∞ and flat tets
@@ -45,8 +46,10 @@ class GDel3D {
   Splayer<B>& splayer() { return sp_; }
 
   // Marks fv[v] = 1 for the vertices of facets that are not locally Delaunay.
-  // Returns the number of items the exact pass decided.
-  static I64 failed_flags(Context<B>& ctx, mesh::MeshView mv, I64 nt, flip::Geo g, I64 m, std::int8_t* fvp) {
+  // Returns the number of items the exact pass decided. `keep` (optional) receives the
+  // facet signs (flip::facet_signs: > 0 not locally Delaunay, on one side of each facet).
+  static I64 failed_flags(Context<B>& ctx, mesh::MeshView mv, I64 nt, flip::Geo g, I64 m, std::int8_t* fvp,
+                          Buffer<std::int8_t, B>* keep = nullptr) {
     Buffer<std::int8_t, B> sgn(ctx, static_cast<std::size_t>(4 * std::max<I64>(nt, 1)));
     std::int8_t* sg = sgn.data();
     const vid_t inf = g.inf;
@@ -61,6 +64,7 @@ class GDel3D {
         if (x != inf) fvp[x] = 1;
       }
     });
+    if (keep) *keep = std::move(sgn);
     return ex;
   }
 
@@ -124,45 +128,82 @@ class GDel3D {
     par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
       const I64 s = s0 + j;
       const I64 a = hp[j], b = hp[j + 1];
-      const vid_t me = gvp[j];
       Tri* T = sv.tri + sv.begin[s];
       std::uint8_t* S = sv.state + sv.begin[s];
-      for (I64 i = a; i < b; ++i) link_triangle(mv, key_vertex(kp[i]), me, T[i - a]);
-      for (I64 i = a; i < b; ++i) {
-        const tid_t t = key_vertex(kp[i]);
-        Tri& tr = T[i - a];
-        for (int e = 0; e < 3; ++e) {
-          // edge e of the link triangle is opposite tr.v[e]: the tet face opposite it
-          const int lf = tet_slot(mv, t, tr.v[e]);
-          const tid_t u = facet_tet(mv.opp[4 * I64(t) + lf]);
-          // local index of u: binary search in [a, b)
-          I64 lo = a, hi = b;
-          const U64 key = pair_key(me, u);
-          while (lo < hi) {
-            const I64 mid = (lo + hi) / 2;
-            if (kp[mid] < key) lo = mid + 1;
-            else hi = mid;
-          }
-          if (lo >= b || kp[lo] != key) {
-            ep[0] = 5;
-            continue;
-          }
-          // the edge of u's triangle with the same two vertices, reversed
-          Tri tu;
-          link_triangle(mv, u, me, tu);
-          const vid_t x = tr.v[(e + 1) % 3], y = tr.v[(e + 2) % 3];
-          int f = -1;
-          for (int q = 0; q < 3; ++q)
-            if (tu.v[(q + 1) % 3] == y && tu.v[(q + 2) % 3] == x) f = q;
-          if (f < 0) ep[0] = 6;
-          tr.adj[e] = static_cast<std::int32_t>(((lo - a) << 2) | (f < 0 ? 0 : f));
-        }
-        S[i - a] = kTriChecked;
-      }
+      if (!star_from_T(mv, kp + a, b - a, gvp[j], T)) ep[0] = 5;
+      for (I64 i = a; i < b; ++i) S[i - a] = kTriChecked;
       sv.count[s] = static_cast<std::int32_t>(b - a);
     });
     sp_.throw_if_error("pulling a star from T");
   }
+
+  // The star of `me` as it is in T: the link triangles of its m tets (inc: their sorted
+  // keys (me << 32 | t)) in that order, with the link adjacency. False if T's adjacency
+  // around `me` is not a closed link (an internal error).
+  GDEL_HD static bool star_from_T(const mesh::MeshView& mv, const U64* inc, I64 m, vid_t me, Tri* T) {
+    bool ok = true;
+    for (I64 i = 0; i < m; ++i) link_triangle(mv, key_vertex(inc[i]), me, T[i]);
+    for (I64 i = 0; i < m; ++i) {
+      const tid_t t = key_vertex(inc[i]);
+      Tri& tr = T[i];
+      for (int e = 0; e < 3; ++e) {
+        // edge e of the link triangle is opposite tr.v[e]: the tet face opposite it
+        const int lf = tet_slot(mv, t, tr.v[e]);
+        const tid_t u = facet_tet(mv.opp[4 * I64(t) + lf]);
+        // local index of u: binary search
+        I64 lo = 0, hi = m;
+        const U64 key = pair_key(me, u);
+        while (lo < hi) {
+          const I64 mid = (lo + hi) / 2;
+          if (inc[mid] < key) lo = mid + 1;
+          else hi = mid;
+        }
+        if (lo >= m || inc[lo] != key) {
+          ok = false;
+          continue;
+        }
+        // the edge of u's triangle with the same two vertices, reversed
+        Tri tu;
+        link_triangle(mv, u, me, tu);
+        const vid_t x = tr.v[(e + 1) % 3], y = tr.v[(e + 2) % 3];
+        int f = -1;
+        for (int q = 0; q < 3; ++q)
+          if (tu.v[(q + 1) % 3] == y && tu.v[(q + 2) % 3] == x) f = q;
+        if (f < 0) ok = false;
+        tr.adj[e] = static_cast<std::int32_t>((lo << 2) | (f < 0 ? 0 : f));
+      }
+    }
+    return ok;
+  }
+
+  // build_stars' seed: a failed vertex's star as it is in T, for Flip-Flop, with the
+  // link edges whose facet is not locally Delaunay in T (facet signs sg) flagged in S:
+  // the others are convex (the same orient4), so Flip-Flop starts from the flagged ones.
+  struct TSeed {
+    static constexpr bool enabled = true;
+    mesh::MeshView mv;
+    const U64* inc;
+    const I64* heads;
+    const std::int8_t* sg;
+    GDEL_HD std::int32_t operator()(I64 j, vid_t me, Tri* T, std::uint8_t* S, std::int32_t cap) const {
+      const I64 a = heads[j], m = heads[j + 1] - a;
+      if (m > cap) return -1;
+      if (!star_from_T(mv, inc + a, m, me, T)) return -1;
+      for (I64 i = 0; i < m; ++i) {
+        const tid_t t = key_vertex(inc[a + i]);
+        std::uint8_t mask = 0;
+        for (int e = 0; e < 3; ++e) {
+          if (!(T[i].v[(e + 1) % 3] < T[i].v[(e + 2) % 3])) continue;  // each edge from one side
+          const I64 f = 4 * I64(t) + tet_slot(mv, t, T[i].v[e]);
+          const fid_t o = mv.opp[f];
+          const std::int8_t sign = (o >= 0 && facet_tet(o) < t) ? sg[o] : sg[f];
+          if (sign > 0) mask |= std::uint8_t(kTriStacked0 << e);
+        }
+        S[i] = mask;
+      }
+      return static_cast<std::int32_t>(m);
+    }
+  };
 
   GDEL_HD static int tet_slot(const mesh::MeshView& mv, tid_t t, vid_t v) {
     for (int i = 0; i < 4; ++i)
@@ -204,9 +245,14 @@ class GDel3D {
     lk.resize(par::unique(ctx_, lp, static_cast<std::size_t>(3 * ni)));
     if (std::getenv("GDEL_SPLAY_DEBUG"))
       std::fprintf(stderr, "gdel3d: %lld failed stars, %lld tets around them\n", (long long)k, (long long)ni);
-    // stars s0 + j, j in [0, k): group j of lk and of inc are the same vertex (both sorted)
-    const I64 s0 = sp_.build_stars(lk, gone);
+    // stars s0 + j, j in [0, k): group j of lk and of inc are the same vertex (both sorted);
+    // convexified from their form in T by Flip-Flop, rebuilt where that gives up
+    // (GDEL_STAR_BUILD=rebuild: all rebuilt, for comparison)
+    const char* how = std::getenv("GDEL_STAR_BUILD");
+    const bool rebuild = how && std::strcmp(how, "rebuild") == 0;
+    const I64 s0 = rebuild ? sp_.build_stars(lk, gone) : sp_.build_stars(lk, gone, TSeed{mv, ip, ihp, facet_sign_.data()});
     res_.stars_built = k;
+    if (rebuild) sp_.stats().rebuilt += k;
     // rebuilt triangles that are tets of T need no check: per star, T's link triangles
     // in canonical form, sorted (one thread per star: heap sort), then a binary search per
     // star triangle — O((m + k) log m), not O(m k): a star of a point on a coplanar hull
@@ -289,7 +335,7 @@ class GDel3D {
       std::fprintf(stderr, "gdel3d %s: %.3f s\n", what,
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     };
-    res_.exact_evaluations += failed_flags(ctx_, mv, nt, g_, m_, fv.data());
+    res_.exact_evaluations += failed_flags(ctx_, mv, nt, g_, m_, fv.data(), &facet_sign_);
     lap("failed vertices");
     const std::int8_t* fvp = fv.data();
     Buffer<vid_t, B> failed(ctx_, static_cast<std::size_t>(m_));
@@ -301,6 +347,7 @@ class GDel3D {
     Buffer<U64, B> gone(ctx_);
     build_failed(failed, gone);
     lap("stars of failed vertices");
+    facet_sign_ = Buffer<std::int8_t, B>(ctx_);
     Buffer<U64, B> req(ctx_);
     sp_.set_source([this](const Buffer<vid_t, B>& verts) { pull(verts); });
     sp_.proofs(gone, req);
@@ -384,6 +431,7 @@ class GDel3D {
   I64 m_;
   Splayer<B> sp_;
   RepairResult res_;
+  Buffer<std::int8_t, B> facet_sign_{ctx_};  // failed_flags' facet signs, until the stars are built
 };
 
 }  // namespace gdel::splay

@@ -33,6 +33,7 @@
 #include "parallel/atomic.hpp"
 #include "parallel/exact_batch.hpp"
 #include "parallel/primitives.hpp"
+#include "splay/flipflop.hpp"
 #include "splay/star.hpp"
 
 namespace gdel::splay {
@@ -97,6 +98,62 @@ GDEL_HD inline void build_one_star(const flip::Geo& g, Tri* T, std::uint8_t* S, 
   *count_out = count;
 }
 
+// A star's working set as its group of sorted pair keys (me << 32 | x): the index of a
+// vertex by binary search, and back (star_flipflop's WorkingSet).
+struct KeyedSet {
+  const U64* k;
+  std::int32_t n;
+  vid_t me;
+  GDEL_HD std::int32_t operator()(vid_t x) const {
+    const U64 key = pair_key(me, x);
+    std::int32_t lo = 0, hi = n;
+    while (lo < hi) {
+      const std::int32_t mid = (lo + hi) / 2;
+      if (k[mid] < key) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo < n && k[lo] == key ? lo : -1;
+  }
+  GDEL_HD vid_t vertex(std::int32_t i) const { return key_vertex(k[i]); }
+};
+
+// One star of Splayer::build_stars when a seed star is given (gDel3D: the star of the
+// failed vertex as it is in T, `seeded` triangles, or -1): Flip-Flop convexification
+// (flipflop.hpp); if that gives up, the seed is discarded and the star is built by
+// build_one_star. keys: the working set as sorted pair keys; ov: the same vertices in
+// build order. Returns 1 if Flip-Flop made the star, 0 if it was rebuilt.
+GDEL_HD inline int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
+                                const U64* keys, const vid_t* ov, I64 len, std::int32_t seeded, double* work, U64* gp,
+                                I64& gk, I64 gend, std::int32_t* err, vid_t* killer, std::int32_t* count_out,
+                                bool given_edges) {
+  if (seeded >= 4 && !g.w) {
+    std::int32_t count = seeded;
+    const I64 gk0 = gk;
+    bool full = false;
+    auto record = [&](vid_t x) {
+      if (gk < gend) gp[gk++] = pair_key(me, x);
+      else full = true;
+    };
+    FlipFlopCounts fc;
+    if (star_flipflop(g, T, S, count, cap, me, static_cast<std::int32_t>(len), KeyedSet{keys, static_cast<std::int32_t>(len), me},
+                      record, work, fc, given_edges) &&
+        !full) {
+      *count_out = count;
+      return 1;
+    }
+    gk = gk0;
+    for (std::int32_t i = 0; i < cap; ++i) S[i] = kTriFree;
+  }
+  build_one_star(g, T, S, cap, me, ov, len, work, gp, gk, gend, err, killer, count_out);
+  return 0;
+}
+
+// No seed stars (gStar4D, gReg3D): build_stars builds every star by beneath-beyond.
+struct NoSeed {
+  static constexpr bool enabled = false;
+  GDEL_HD std::int32_t operator()(I64, vid_t, Tri*, std::uint8_t*, std::int32_t) const { return -1; }
+};
+
 // Plain pointers to the stars, for kernels.
 struct StarView {
   vid_t* vert;          // star -> its vertex
@@ -112,6 +169,8 @@ struct StarView {
 
 struct SplayStats {
   I64 rounds = 0, insertions = 0, stars_pulled = 0, proofs = 0, dead = 0;
+  // seeded stars (gDel3D's failed stars) made convex by Flip-Flop, and rebuilt instead
+  I64 flipflop = 0, rebuilt = 0;
   // the critical path of one thread per star: Σ over the build and every round of the most
   // insertions into one star (counted only with GDEL_SPLAY_DEBUG set: it costs a reduction
   // per round), and the most triangles one star held (largest_star())
@@ -254,7 +313,11 @@ class Splayer {
   // coplanar hull face). Every triangle is New; the pairs become history; drowned and
   // submerged pairs go to `gone`. Returns the id of the first new star (stars follow in
   // the order of the groups).
-  I64 build_stars(const Buffer<U64, B>& lk, Buffer<U64, B>& gone) {
+  // With a Seed (gDel3D), seed(j, vertex, T, S, cap) writes star j's triangles as they
+  // are in the input triangulation (adjacency set) and returns their number, or -1; such
+  // a star is convexified by Flip-Flop (seeded_build) and rebuilt only if that gives up.
+  template <class Seed = NoSeed>
+  I64 build_stars(const Buffer<U64, B>& lk, Buffer<U64, B>& gone, Seed seed = Seed{}) {
     I64 k = 0;
     Buffer<I64, B> lh = group_heads(lk, k);
     const I64* lhp = lh.data();
@@ -310,6 +373,19 @@ class Splayer {
     const StarView sv = view();
     const flip::Geo g = g_;
     std::int32_t* ep = error_.data();
+    // seed stars (-1: none), and per star 1 if Flip-Flop made it
+    Buffer<std::int32_t, B> seeded(ctx_, static_cast<std::size_t>(std::max<I64>(k, 1)));
+    Buffer<std::int32_t, B> ffm(ctx_, static_cast<std::size_t>(std::max<I64>(k, 1)));
+    std::int32_t* sdp = seeded.data();
+    std::int32_t* ffp = ffm.data();
+    if constexpr (Seed::enabled) {
+      par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
+        const I64 s = s0 + j;
+        sdp[j] = seed(j, gvp[j], sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s]);
+      });
+    } else {
+      par::fill(ctx_, sdp, static_cast<std::size_t>(k), std::int32_t(-1));
+    }
     // On the CUDA backend a star with a huge working set (a point on a coplanar hull face:
     // thousands of link vertices, every predicate degenerate) would be built by one GPU
     // thread at tens of µs per exact, symbolically perturbed test (bench/RESULTS.md
@@ -327,19 +403,27 @@ class Splayer {
       }
     }
     HostJobs hjobs;
-    if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov);
+    if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov, lp, sdp);
     par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
       const I64 s = s0 + j;
       const I64 a = lhp[j], b = lhp[j + 1];
       up[j] = 0;
+      ffp[j] = 0;
       if (b - a > host_min) return;  // built on the host
       I64 gk = rmp[j];
-      build_one_star(g, sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s], gvp[j], ov + a, b - a, work, gp, gk,
-                     rmp[j + 1], ep, sv.killer + s, sv.count + s);
+      ffp[j] = seeded_build(g, sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s], gvp[j], lp + a, ov + a, b - a,
+                            sdp[j], work, gp, gk, rmp[j + 1], ep, sv.killer + s, sv.count + s, Seed::enabled);
       up[j] = gk - rmp[j];
     });
-    if (!huge.empty()) run_host_jobs(hjobs, gp, up);  // while the kernel runs; then writes back
+    if (!huge.empty()) run_host_jobs(hjobs, gp, up, ffp);  // while the kernel runs; then writes back
     throw_if_error("building stars");
+    if constexpr (Seed::enabled) {
+      const I64 ff = par::reduce_sum(ctx_, ffp, static_cast<std::size_t>(k));
+      ss_.flipflop += ff;
+      ss_.rebuilt += k - ff;
+      if (debug_) std::fprintf(stderr, "splay: %lld stars made convex by Flip-Flop, %lld rebuilt\n", (long long)ff,
+                               (long long)(k - ff));
+    }
     gone = pack_pairs(gp, rmp, up, k);
     certify_deaths();
     return s0;
@@ -366,6 +450,8 @@ class Splayer {
     std::vector<std::uint8_t> S;
     std::vector<U64> gone;
     I64 used = 0;
+    std::int32_t seeded = -1, ff = 0;
+    std::vector<U64> keys;
   };
   struct HostJobs {
     std::vector<double> xyz, w;
@@ -382,7 +468,7 @@ class Splayer {
     par::detail::Memory<B>::from_host(ctx_, dst, src, count * sizeof(T));
   }
   HostJobs host_jobs(const std::vector<I64>& huge, I64 s0, const I64* lhp, const I64* rmp, const vid_t* gvp,
-                     const vid_t* ov) {
+                     const vid_t* ov, const U64* lp, const std::int32_t* sdp) {
     HostJobs H;
     const std::size_t np = static_cast<std::size_t>(g_.inf) + 1;  // n points and K
     H.xyz.resize(3 * np);
@@ -414,11 +500,18 @@ class Splayer {
       get(J.pts.data(), ov + J.a, J.pts.size());
       J.T.resize(static_cast<std::size_t>(J.cap));
       J.S.assign(static_cast<std::size_t>(J.cap), std::uint8_t(kTriFree));
+      get(&J.seeded, sdp + J.j, 1);
+      if (J.seeded >= 0) {  // the seed star (its triangles; the rest is scratch)
+        get(J.T.data(), static_cast<const Tri*>(sv.tri + J.begin), static_cast<std::size_t>(J.seeded));
+        get(J.S.data(), static_cast<const std::uint8_t*>(sv.state + J.begin), static_cast<std::size_t>(J.seeded));
+        J.keys.resize(J.pts.size());
+        get(J.keys.data(), lp + J.a, J.keys.size());
+      }
       J.gone.resize(static_cast<std::size_t>(std::max<I64>(J.g1 - J.g0, 1)));
     }
     return H;
   }
-  void run_host_jobs(HostJobs& H, U64* gp, I64* up) {
+  void run_host_jobs(HostJobs& H, U64* gp, I64* up, std::int32_t* ffp) {
     const flip::Geo& hg = H.g;
     std::atomic<std::size_t> next{0};
     auto worker = [&] {
@@ -426,8 +519,9 @@ class Splayer {
       for (std::size_t h; (h = next.fetch_add(1)) < H.jobs.size();) {
         HostJob& J = H.jobs[h];
         I64 gk = 0;
-        build_one_star(hg, J.T.data(), J.S.data(), J.cap, J.me, J.pts.data(), static_cast<I64>(J.pts.size()),
-                       work.data(), J.gone.data(), gk, J.g1 - J.g0, &J.err, &J.killer, &J.count);
+        J.ff = seeded_build(hg, J.T.data(), J.S.data(), J.cap, J.me, J.keys.data(), J.pts.data(),
+                            static_cast<I64>(J.pts.size()), J.seeded, work.data(), J.gone.data(), gk, J.g1 - J.g0,
+                            &J.err, &J.killer, &J.count, true);
         J.used = gk;
       }
     };
@@ -445,6 +539,7 @@ class Splayer {
       if (J.killer >= 0) put(sv.killer + J.s, &J.killer, 1);
       if (J.used > 0) put(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used));
       put(up + J.j, &J.used, 1);
+      put(ffp + J.j, &J.ff, 1);
       if (J.err != 0) put(error_.data(), &J.err, 1);
     }
   }

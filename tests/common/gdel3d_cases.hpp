@@ -84,6 +84,32 @@ inline void gdel3d_host_star_case(Backend b) {
   }
 }
 
+// Flip-Flop convexification of the failed stars (the default) and their rebuild by
+// beneath-beyond insertion (GDEL_STAR_BUILD=rebuild) give the same triangulation: the
+// convex star over a point set is unique. Flip-Flop must have made stars, and rebuilt none.
+inline void gdel3d_flipflop_case(Backend b) {
+  for (auto d : {gen::Distribution::Uniform, gen::Distribution::ThinShell, gen::Distribution::Grid,
+                 gen::Distribution::Sphere}) {
+    SCOPED_TRACE(std::string(gen::to_string(d)));
+    auto pts = gen::generate(d, d == gen::Distribution::Sphere ? 20000 : 100000, 41);
+    Options o;
+    o.backend = b;
+    o.canonical_order = true;  // the stars' triangles come in a different order
+    Triangulation ff = delaunay(pts, o);
+    EXPECT_GT(ff.stats.stars_flipflop, 0);
+    EXPECT_EQ(ff.stats.stars_flipflop + ff.stats.stars_rebuilt, ff.stats.stars_built);
+    EXPECT_EQ(ff.stats.stars_rebuilt, 0);
+    ::setenv("GDEL_STAR_BUILD", "rebuild", 1);
+    Triangulation rb = delaunay(pts, o);
+    ::unsetenv("GDEL_STAR_BUILD");
+    EXPECT_EQ(rb.stats.stars_flipflop, 0);
+    EXPECT_EQ(rb.stats.stars_rebuilt, rb.stats.stars_built);
+    expect_exact_delaunay(pts, ff, b);
+    EXPECT_EQ(ff.tets, rb.tets);
+    EXPECT_EQ(ff.neighbors, rb.neighbors);
+  }
+}
+
 // Two skew lines (gen::skew_lines: a points on the x axis at z = 0, b on the line x = 0,
 // z = 1): the Delaunay triangulation is unique and known. No sphere holds 3 points of a
 // line, so no 5 points are cospherical, and a tet with 3 points on one line is flat: the

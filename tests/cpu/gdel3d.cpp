@@ -15,3 +15,4 @@ TEST(GDel3DCpu, LargerSphereAndGrid) {
 // 10^6 (about 5 minutes on 2 cores; the skew lines: SkewLines above).
 TEST(GDel3DCpu, AllGeneratorsAtScale) { gdel::test::gdel3d_scale_cases(gdel::Backend::Cpu, {10000, 100000, 1000000}); }
 TEST(GDel3DCpu, HostBuiltStarsSameResult) { gdel::test::gdel3d_host_star_case(gdel::Backend::Cpu); }
+TEST(GDel3DCpu, FlipFlopSameAsRebuild) { gdel::test::gdel3d_flipflop_case(gdel::Backend::Cpu); }
