@@ -311,6 +311,13 @@ case "$plan" in
     step gdel3d 200 "$tbin/gpu_gdel3d"
     step models 100 "$tbin/gpu_models"
     ;;
+  s8tests)  # after s8ff: the rebuild's laps on sphere and grid; the engine's other users' GPU tests
+    GDEL_STAR_BUILD=rebuild GDEL_SPLAY_DEBUG=1 bench rb_laps 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda \
+      --repeat 1
+    step gstar4d 200 "$tbin/gpu_gstar4d"
+    step greg3d 150 "$tbin/gpu_greg3d"
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
