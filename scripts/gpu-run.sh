@@ -318,6 +318,11 @@ case "$plan" in
     step greg3d 150 "$tbin/gpu_greg3d"
     step gflip3d 150 "$tbin/gpu_gflip3d"
     ;;
+  s8cgal)  # issue 4's benchmark with Flip-Flop the default: gdel3d against CGAL sequential and parallel
+    bench c_uniform 200 --dist uniform --n 100000,1000000,10000000 --methods gdel3d-cuda,cgal,cgal-par --repeat 1
+    bench c_e6 120 --dist gaussian,ball,thin_shell,grid --n 1000000 --methods gdel3d-cuda,cgal,cgal-par --repeat 1
+    bench c_sphere 200 --dist sphere --n 1000000 --methods gdel3d-cuda,cgal --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
