@@ -44,7 +44,7 @@ struct FlipFlopCounts {
 template <class WorkingSet, class Record>
 GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap,
                            vid_t s, std::int32_t nws, WorkingSet ws, Record record, double* work,
-                           FlipFlopCounts& fc, bool given_edges = false) {
+                           FlipFlopCounts& fc, bool given_edges = false, std::int64_t step_cap = -1) {
   const std::int32_t c0 = count;
   if (c0 < 4) return false;
   // scratch past the live triangles: the edge stack (3 * c0 ints: one entry per
@@ -137,7 +137,9 @@ GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int
     for (int e = 0; e < 3; ++e) push(t, e);
     return true;
   };
-  const std::int64_t budget = 64 * static_cast<std::int64_t>(c0) + 4096;
+  // the step budget (step_cap >= 0 lowers it: tests drive the caller's fallback with 0)
+  std::int64_t budget = 64 * static_cast<std::int64_t>(c0) + 4096;
+  if (step_cap >= 0 && step_cap < budget) budget = step_cap;
   std::int64_t steps = 0;
   while (sp > 0) {
     if (++steps > budget) return false;

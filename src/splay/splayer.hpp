@@ -125,7 +125,7 @@ struct KeyedSet {
 GDEL_HD inline int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
                                 const U64* keys, const vid_t* ov, I64 len, std::int32_t seeded, double* work, U64* gp,
                                 I64& gk, I64 gend, std::int32_t* err, vid_t* killer, std::int32_t* count_out,
-                                bool given_edges) {
+                                bool given_edges, I64 step_cap = -1) {
   if (seeded >= 4 && !g.w) {
     std::int32_t count = seeded;
     const I64 gk0 = gk;
@@ -136,7 +136,7 @@ GDEL_HD inline int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std
     };
     FlipFlopCounts fc;
     if (star_flipflop(g, T, S, count, cap, me, static_cast<std::int32_t>(len), KeyedSet{keys, static_cast<std::int32_t>(len), me},
-                      record, work, fc, given_edges) &&
+                      record, work, fc, given_edges, step_cap) &&
         !full) {
       *count_out = count;
       return 1;
@@ -392,6 +392,9 @@ class Splayer {
     // 2026-11-25: 7.3 s for one 1 845-point star on the H100). Those few stars are built
     // on the host's cores instead, with the same code, while the kernel builds the rest.
     const I64 host_min = host_build_min();
+    // GDEL_FLIPFLOP_STEPS=N caps Flip-Flop's steps per star (tests: 0 makes every seeded
+    // star take the rebuild fallback)
+    const I64 ff_cap = std::getenv("GDEL_FLIPFLOP_STEPS") ? std::atoll(std::getenv("GDEL_FLIPFLOP_STEPS")) : -1;
     std::vector<I64> huge;
     if (host_min < (I64(1) << 62)) {
       Buffer<I64, B> hj(ctx_, static_cast<std::size_t>(std::max<I64>(k, 1)));
@@ -412,10 +415,10 @@ class Splayer {
       if (b - a > host_min) return;  // built on the host
       I64 gk = rmp[j];
       ffp[j] = seeded_build(g, sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s], gvp[j], lp + a, ov + a, b - a,
-                            sdp[j], work, gp, gk, rmp[j + 1], ep, sv.killer + s, sv.count + s, Seed::enabled);
+                            sdp[j], work, gp, gk, rmp[j + 1], ep, sv.killer + s, sv.count + s, Seed::enabled, ff_cap);
       up[j] = gk - rmp[j];
     });
-    if (!huge.empty()) run_host_jobs(hjobs, gp, up, ffp);  // while the kernel runs; then writes back
+    if (!huge.empty()) run_host_jobs(hjobs, gp, up, ffp, ff_cap);  // while the kernel runs; then writes back
     throw_if_error("building stars");
     if constexpr (Seed::enabled) {
       const I64 ff = par::reduce_sum(ctx_, ffp, static_cast<std::size_t>(k));
@@ -511,7 +514,7 @@ class Splayer {
     }
     return H;
   }
-  void run_host_jobs(HostJobs& H, U64* gp, I64* up, std::int32_t* ffp) {
+  void run_host_jobs(HostJobs& H, U64* gp, I64* up, std::int32_t* ffp, I64 ff_cap) {
     const flip::Geo& hg = H.g;
     std::atomic<std::size_t> next{0};
     auto worker = [&] {
@@ -521,7 +524,7 @@ class Splayer {
         I64 gk = 0;
         J.ff = seeded_build(hg, J.T.data(), J.S.data(), J.cap, J.me, J.keys.data(), J.pts.data(),
                             static_cast<I64>(J.pts.size()), J.seeded, work.data(), J.gone.data(), gk, J.g1 - J.g0,
-                            &J.err, &J.killer, &J.count, true);
+                            &J.err, &J.killer, &J.count, true, ff_cap);
         J.used = gk;
       }
     };

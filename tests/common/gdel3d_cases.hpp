@@ -87,6 +87,8 @@ inline void gdel3d_host_star_case(Backend b) {
 // Flip-Flop convexification of the failed stars (the default) and their rebuild by
 // beneath-beyond insertion (GDEL_STAR_BUILD=rebuild) give the same triangulation: the
 // convex star over a point set is unique. Flip-Flop must have made stars, and rebuilt none.
+// With GDEL_FLIPFLOP_STEPS=0 every star takes the fallback (the rebuild after Flip-Flop
+// gave up): the same triangulation again.
 inline void gdel3d_flipflop_case(Backend b) {
   for (auto d : {gen::Distribution::Uniform, gen::Distribution::ThinShell, gen::Distribution::Grid,
                  gen::Distribution::Sphere}) {
@@ -107,6 +109,13 @@ inline void gdel3d_flipflop_case(Backend b) {
     expect_exact_delaunay(pts, ff, b);
     EXPECT_EQ(ff.tets, rb.tets);
     EXPECT_EQ(ff.neighbors, rb.neighbors);
+    ::setenv("GDEL_FLIPFLOP_STEPS", "0", 1);
+    Triangulation fb = delaunay(pts, o);
+    ::unsetenv("GDEL_FLIPFLOP_STEPS");
+    EXPECT_EQ(fb.stats.stars_flipflop, 0);
+    EXPECT_EQ(fb.stats.stars_rebuilt, fb.stats.stars_built);
+    EXPECT_EQ(ff.tets, fb.tets);
+    EXPECT_EQ(ff.neighbors, fb.neighbors);
   }
 }
 
