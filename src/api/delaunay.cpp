@@ -40,8 +40,9 @@ std::string Stats::to_string() const {
   if (algorithm == "greg3d") s << ", dead stars " << dead_stars << ", redundant points " << redundant_points;
   if (algorithm == "gdel3d")
     s << "\n  repair: failed vertices " << repair_failed_vertices << ", stars built " << stars_built << " ("
-      << stars_flipflop << " by Flip-Flop, " << stars_rebuilt << " rebuilt), stars pulled " << stars_pulled << ", splay rounds " << splay_rounds << ", insertions "
-      << splay_insertions << ", flat tets removed " << flat_tets_removed;
+      << stars_flipflop << " by Flip-Flop, " << stars_rebuilt << " rebuilt), stars pulled " << stars_pulled
+      << ", splay rounds " << splay_rounds << ", insertions " << splay_insertions << ", flat tets removed "
+      << flat_tets_removed;
   if (!verify_summary.empty()) s << "\n  verify: " << verify_summary;
   return s.str();
 }

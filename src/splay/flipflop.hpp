@@ -26,14 +26,9 @@ namespace gdel::splay {
 // S bits for "edge k of this triangle is on the Flip-Flop stack" (k = 0, 1, 2).
 inline constexpr std::uint8_t kTriStacked0 = 32;
 
-struct FlipFlopCounts {
-  std::int32_t flips = 0, flops = 0, marked = 0, reinserted = 0, unresolved = 0;
-};
-
-// Convexifies the star of s held in T[0, count) (adjacency set). With `given_edges`,
-// S[i] & (kTriStacked0 << k) on input flags the edges that may be reflex (the others are
-// known convex: gDel3D's facets of T that are locally Delaunay under the same orient4);
-// without, S is ignored on input and every edge is tested.
+// Convexifies the star of s held in T[0, count) (adjacency set). S[i] & (kTriStacked0 << k)
+// on input flags the edges to start from: those that may be reflex (the others must be
+// known convex, as gDel3D's facets of T that are locally Delaunay under the same orient4).
 // `nws` link vertices, through `ws`: ws(x) is x's index in [0, nws) (-1 if none) and
 // ws.vertex(i) the vertex of index i (e.g. a sorted list and a binary search).
 // `record(x)` receives the vertices that end up outside the star (not extreme); it may
@@ -44,7 +39,7 @@ struct FlipFlopCounts {
 template <class WorkingSet, class Record>
 GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap,
                            vid_t s, std::int32_t nws, WorkingSet ws, Record record, double* work,
-                           FlipFlopCounts& fc, bool given_edges = false, std::int64_t step_cap = -1) {
+                           std::int64_t step_cap = -1) {
   const std::int32_t c0 = count;
   if (c0 < 4) return false;
   // scratch past the live triangles: the edge stack (3 * c0 ints: one entry per
@@ -79,7 +74,7 @@ GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int
     const std::uint8_t given = S[i];
     S[i] = kTriNew;
     for (int k = 0; k < 3; ++k)
-      if (given_edges ? (given & (kTriStacked0 << k)) != 0 : T[i].v[(k + 1) % 3] < T[i].v[(k + 2) % 3]) push(i, k);
+      if (given & (kTriStacked0 << k)) push(i, k);
   }
   auto marked = [&](vid_t x) -> bool {
     const std::int32_t i = ws(x);
@@ -133,7 +128,6 @@ GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int
     const std::int32_t i = ws(x);
     if (i < 0) return false;
     mark[i] = certified ? 2 : 4;
-    ++fc.flops;
     for (int e = 0; e < 3; ++e) push(t, e);
     return true;
   };
@@ -159,10 +153,7 @@ GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int
     for (int q = 0; q < 4; ++q)
       if ((m < 0 || four[q] < m) && marked(four[q])) m = four[q];
     if (m >= 0 && (m == w || m == y)) {  // a flip would raise its degree
-      if (reflex) {
-        ++fc.unresolved;
-        left_reflex(t, k);
-      }
+      if (reflex) left_reflex(t, k);
       continue;
     }
     if (m < 0 && !reflex) continue;
@@ -199,11 +190,7 @@ GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int
       T[t2] = b;
       relink(t);
       relink(t2);
-      ++fc.flips;
-      if (!reflex) {  // flipping a convex edge (m's): the diagonal wy may be reflex
-        ++fc.unresolved;
-        left_reflex(t, 0);
-      }
+      if (!reflex) left_reflex(t, 0);  // flipping a convex edge (m's): wy may be reflex
       push(t, 1);
       push(t, 2);
       push(t2, 0);
@@ -211,14 +198,12 @@ GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int
       continue;
     }
     if (reflex) {  // blocked: the quadrilateral is not convex at u (or v) seen from s
-      ++fc.unresolved;
       left_reflex(t, k);
       const vid_t x = pa ? v : u;
       const std::int32_t i = ws(x);
       if (i < 0) return false;
       if (!(mark[i] & 1)) {
         mark[i] |= 1;
-        ++fc.marked;
         push_around(pa ? t2 : t, x);
       }
     }
@@ -273,8 +258,7 @@ GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int
     const vid_t x = ws.vertex(rem[j]);
     const int r = star_insert(g, T, S, count, cap2, s, x, work, record, 0, &nonpos);
     if (r == kDrowned) record(x);
-    else if (r == kInserted) ++fc.reinserted;
-    else return false;
+    else if (r != kInserted) return false;
   }
   return true;
 }

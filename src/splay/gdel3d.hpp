@@ -150,15 +150,8 @@ class GDel3D {
         // edge e of the link triangle is opposite tr.v[e]: the tet face opposite it
         const int lf = tet_slot(mv, t, tr.v[e]);
         const tid_t u = facet_tet(mv.opp[4 * I64(t) + lf]);
-        // local index of u: binary search
-        I64 lo = 0, hi = m;
-        const U64 key = pair_key(me, u);
-        while (lo < hi) {
-          const I64 mid = (lo + hi) / 2;
-          if (inc[mid] < key) lo = mid + 1;
-          else hi = mid;
-        }
-        if (lo >= m || inc[lo] != key) {
+        const I64 lo = sorted_find(inc, m, pair_key(me, u));  // local index of u
+        if (lo < 0) {
           ok = false;
           continue;
         }

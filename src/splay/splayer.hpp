@@ -49,15 +49,17 @@ GDEL_HD inline U64 pair_key(vid_t target, vid_t v) {
 GDEL_HD inline vid_t key_target(U64 k) { return static_cast<vid_t>(k >> 32); }
 GDEL_HD inline vid_t key_vertex(U64 k) { return static_cast<vid_t>(k & 0xffffffffu); }
 
-GDEL_HD inline bool sorted_contains(const U64* a, I64 n, U64 k) {
+// The index of k in the sorted keys a[0, n), or -1.
+GDEL_HD inline I64 sorted_find(const U64* a, I64 n, U64 k) {
   I64 lo = 0, hi = n;
   while (lo < hi) {
     const I64 mid = (lo + hi) / 2;
     if (a[mid] < k) lo = mid + 1;
     else hi = mid;
   }
-  return lo < n && a[lo] == k;
+  return lo < n && a[lo] == k ? lo : -1;
 }
+GDEL_HD inline bool sorted_contains(const U64* a, I64 n, U64 k) { return sorted_find(a, n, k) >= 0; }
 
 // Inserts q into the star of s (star_insert) and records in out[k, kend) the pair
 // (s, x) of every vertex x that left the star, and (s, q) if q drowned. Running out of
@@ -105,14 +107,7 @@ struct KeyedSet {
   std::int32_t n;
   vid_t me;
   GDEL_HD std::int32_t operator()(vid_t x) const {
-    const U64 key = pair_key(me, x);
-    std::int32_t lo = 0, hi = n;
-    while (lo < hi) {
-      const std::int32_t mid = (lo + hi) / 2;
-      if (k[mid] < key) lo = mid + 1;
-      else hi = mid;
-    }
-    return lo < n && k[lo] == key ? lo : -1;
+    return static_cast<std::int32_t>(sorted_find(k, n, pair_key(me, x)));
   }
   GDEL_HD vid_t vertex(std::int32_t i) const { return key_vertex(k[i]); }
 };
@@ -125,8 +120,8 @@ struct KeyedSet {
 GDEL_HD inline int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
                                 const U64* keys, const vid_t* ov, I64 len, std::int32_t seeded, double* work, U64* gp,
                                 I64& gk, I64 gend, std::int32_t* err, vid_t* killer, std::int32_t* count_out,
-                                bool given_edges, I64 step_cap = -1) {
-  if (seeded >= 4 && !g.w) {
+                                I64 step_cap = -1) {
+  if (seeded >= 4 && !g.w) {  // (weighted stars may die: no Flip-Flop for them)
     std::int32_t count = seeded;
     const I64 gk0 = gk;
     bool full = false;
@@ -134,10 +129,8 @@ GDEL_HD inline int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std
       if (gk < gend) gp[gk++] = pair_key(me, x);
       else full = true;
     };
-    FlipFlopCounts fc;
-    if (star_flipflop(g, T, S, count, cap, me, static_cast<std::int32_t>(len), KeyedSet{keys, static_cast<std::int32_t>(len), me},
-                      record, work, fc, given_edges, step_cap) &&
-        !full) {
+    const std::int32_t n = static_cast<std::int32_t>(len);
+    if (star_flipflop(g, T, S, count, cap, me, n, KeyedSet{keys, n, me}, record, work, step_cap) && !full) {
       *count_out = count;
       return 1;
     }
@@ -314,7 +307,8 @@ class Splayer {
   // submerged pairs go to `gone`. Returns the id of the first new star (stars follow in
   // the order of the groups).
   // With a Seed (gDel3D), seed(j, vertex, T, S, cap) writes star j's triangles as they
-  // are in the input triangulation (adjacency set) and returns their number, or -1; such
+  // are in the input triangulation (adjacency set; S flags the edges Flip-Flop starts
+  // from, see star_flipflop) and returns their number, or -1; such
   // a star is convexified by Flip-Flop (seeded_build) and rebuilt only if that gives up.
   template <class Seed = NoSeed>
   I64 build_stars(const Buffer<U64, B>& lk, Buffer<U64, B>& gone, Seed seed = Seed{}) {
@@ -415,7 +409,7 @@ class Splayer {
       if (b - a > host_min) return;  // built on the host
       I64 gk = rmp[j];
       ffp[j] = seeded_build(g, sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s], gvp[j], lp + a, ov + a, b - a,
-                            sdp[j], work, gp, gk, rmp[j + 1], ep, sv.killer + s, sv.count + s, Seed::enabled, ff_cap);
+                            sdp[j], work, gp, gk, rmp[j + 1], ep, sv.killer + s, sv.count + s, ff_cap);
       up[j] = gk - rmp[j];
     });
     if (!huge.empty()) run_host_jobs(hjobs, gp, up, ffp, ff_cap);  // while the kernel runs; then writes back
@@ -524,7 +518,7 @@ class Splayer {
         I64 gk = 0;
         J.ff = seeded_build(hg, J.T.data(), J.S.data(), J.cap, J.me, J.keys.data(), J.pts.data(),
                             static_cast<I64>(J.pts.size()), J.seeded, work.data(), J.gone.data(), gk, J.g1 - J.g0,
-                            &J.err, &J.killer, &J.count, true, ff_cap);
+                            &J.err, &J.killer, &J.count, ff_cap);
         J.used = gk;
       }
     };
