@@ -83,6 +83,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   Prepared<B> pr(ctx);
   ctx.profile_start();
   prepare_points(ctx, xp, n, nullptr, pr);  // DegenerateInput with fewer than 4 distinct points
+  X.release();                              // the upload (HostOutput): prepare made its sorted copy
   const I64 m = pr.m;
   st.distinct_points = m;
   sink.representative(ctx, pr.rep, n, out);
@@ -114,16 +115,20 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   cfg.terminal = opt.terminal_flipping;
   // non-optimal flipping: on request, or under Auto when stuck on < 1 % of the points
   cfg.nonoptimal = opt.nonoptimal_flips || opt.algorithm == Algorithm::Auto;
-  if (!opt.nonoptimal_flips) cfg.nonoptimal_max_share = 0.01;
+  if (!opt.nonoptimal_flips) {
+    cfg.nonoptimal_max_share = 0.01;
+    cfg.nonoptimal_keep_best = false;  // memory: no copy of the mesh (the repair is exact anyway)
+  }
   cfg.reorder_tets = opt.reorder_tets;
   flip::GFlip3D<B> alg(ctx, P, sid, m, cfg, st);
   if (opt.initial == Initial::grid) grid::grid_initial(ctx, alg, P, sid, m, lo, hi, opt, st);  // else: first tet
   alg.run();
+  alg.release_work();
 
   // --- output ----------------------------------------------------------------------------
   t0 = std::chrono::steady_clock::now();
   auto& mesh = alg.mesh();
-  mesh.compact();
+  mesh.compact(/*shrink=*/true);
   par::mark(ctx, "output: compact mesh");
   const I64 nt = mesh.size();
   mesh::MeshView mv = mesh.view();

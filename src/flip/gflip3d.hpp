@@ -42,8 +42,16 @@ struct FlipConfig {
   bool nonoptimal = false;
   // ... skipped when the stuck facets exceed this share of the points (1: never skipped)
   double nonoptimal_max_share = 1.0;
+  // ... and the state with the fewest non-locally-Delaunay facets is kept (a copy of the
+  // mesh, ≈ 53 bytes per tet, beside the work arrays); without it (Auto, whose repair
+  // makes any state exact) the last state is the result
+  bool nonoptimal_keep_best = true;
   int nonoptimal_rounds = 16;
   int nonoptimal_steps = 8;
+  // The flip log of a round (the flip DAG that relocates the uninserted points) holds at
+  // most this many records per point (48 bytes each): past it, the points are relocated
+  // through the flips so far and the log starts again (same result; an extra walk).
+  double log_records_per_point = 0.5;
 };
 
 // The fast/exact split of the parallel layer with the predicates' scratch size.
@@ -60,9 +68,7 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx),
-        aux_best_(ctx), aux_split_(ctx), aux_vote_(ctx), aux_mark_(ctx), aux_next_(ctx), msg_(ctx), log_(ctx),
-        log_next_(ctx) {}
+        active_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {}
 
   // Debug aid: GDEL_CHECK_MESH=1 runs the structural invariant checker after every
   // step and throws at the first violation (validate level 1; slow).
@@ -98,11 +104,14 @@ class GFlip3D {
         flip_loop(/*all_tets=*/false, /*with_log=*/remaining > 0);
         t_flip_ += since(tf);
         if (trace_)
-          std::fprintf(stderr, "gflip3d round %lld: inserted %lld, remaining %lld, tets %lld, flip iterations %lld, flips %lld, %.4f s\n",
+          std::fprintf(stderr,
+                       "gflip3d round %lld: inserted %lld, remaining %lld, tets %lld (slots %lld), flip iterations "
+                       "%lld, flips %lld, logged %lld, memory %.1f MiB, %.4f s\n",
                        static_cast<long long>(st_.rounds), static_cast<long long>(inserted),
                        static_cast<long long>(remaining), static_cast<long long>(mesh_.size()),
-                       static_cast<long long>(st_.flip_iterations - it0),
-                       static_cast<long long>(st_.flips23 + st_.flips32 - f0), since(tf));
+                       static_cast<long long>(mesh_.capacity()), static_cast<long long>(st_.flip_iterations - it0),
+                       static_cast<long long>(st_.flips23 + st_.flips32 - f0), static_cast<long long>(log_.size()),
+                       ctx_.memory().current() / 1048576.0, since(tf));
         if (remaining > 0) {
           auto tl = std::chrono::steady_clock::now();
           relocate_through_dag();
@@ -142,6 +151,16 @@ class GFlip3D {
   }
 
   mesh::TetMesh<B>& mesh() { return mesh_; }
+  // Frees everything but the mesh (per-point and per-tet work arrays, flip log): for
+  // after run(), so that the repair and the output do not sit beside them.
+  void release_work() {
+    vert_tet_.release();
+    todo_.release();
+    active_.release();
+    aux_key_.release();
+    aux_pick_.release();
+    log_.release();
+  }
   vid_t infinite() const { return static_cast<vid_t>(n_); }
   Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_)}; }
 
@@ -155,7 +174,7 @@ class GFlip3D {
   void init_from(const Buffer<mesh::Tet, B>& tets, const Buffer<fid_t, B>& opp, std::int64_t nt,
                  Buffer<tid_t, B>&& vert_tet, Buffer<vid_t, B>&& todo) {
     inv_scale_ = inverse_scale();
-    mesh_.reserve(std::max<std::int64_t>(8 * n_ + 64, 2 * nt + 64));  // fresh slots are dead
+    mesh_.reserve(std::max<std::int64_t>(initial_slots(), 2 * nt + 64));  // fresh slots are dead
     par::detail::Memory<B>::copy(ctx_, mesh_.tets().data(), tets.data(), static_cast<std::size_t>(nt) * sizeof(mesh::Tet));
     par::detail::Memory<B>::copy(ctx_, mesh_.opp().data(), opp.data(), static_cast<std::size_t>(4 * nt) * sizeof(fid_t));
     par::fill(ctx_, mesh_.state().data(), static_cast<std::size_t>(nt), std::uint8_t(mesh::kAlive));
@@ -173,21 +192,37 @@ class GFlip3D {
   }
   void stage(const char* name, std::chrono::steady_clock::time_point t) { st_.stages.push_back({name, since(t)}); }
 
-  // Per-tet auxiliary arrays follow the mesh capacity.
+  // Tet slots reserved at the start: the Delaunay triangulation of n random points has
+  // about 6.8 n tets (ALGORITHMS.md §1.1), gFlip3D's intermediate states a few % more;
+  // when a run needs more, TetMesh grows (mesh/tet_mesh.hpp). Not 8 n: at 10^8 points
+  // each slot of the mesh and its work arrays costs ≈ 70 bytes (bench/RESULTS.md).
+  std::int64_t initial_slots() const { return 7 * n_ + n_ / 4 + 64; }
+
+  // Per-tet auxiliary arrays follow the mesh capacity (exactly: no growth slack of
+  // their own). Each is at its reset value between steps:
+  //   aux_key_  0 — insertion: a tet's best point key; relocation: 1 + the first logged
+  //             flip that consumed the slot (flip DAG); flipping: (iteration + 1) << 32 |
+  //             flip index of the flip that took the tet (stale stamps never match a
+  //             later iteration; clear_marks() zeroes them before the other two uses)
+  //   aux_pick_ -1 — insertion: the split index of a split tet; flipping: the vote
+  //             (INT_MAX - smallest proposer, atomic max)
   void grow_aux() {
     const std::size_t cap = static_cast<std::size_t>(mesh_.capacity());
-    auto grow = [&](auto& buf, auto init, std::size_t per) {
+    auto grow = [&](auto& buf, auto init) {
       std::size_t old = buf.size();
-      if (old >= cap * per) return;
-      buf.resize(cap * per);
-      par::fill(ctx_, buf.data() + old, cap * per - old, init);
+      if (old >= cap) return;
+      buf.reserve(cap);
+      buf.resize(cap);
+      par::fill(ctx_, buf.data() + old, cap - old, init);
     };
-    grow(aux_best_, std::uint64_t(0), 1);
-    grow(aux_split_, std::int32_t(-1), 1);
-    grow(aux_vote_, std::int32_t(INT_MAX), 1);
-    grow(aux_mark_, std::int32_t(-1), 1);
-    grow(aux_next_, std::int64_t(-1), 1);
-    grow(msg_, fid_t(-1), 4);
+    grow(aux_key_, std::uint64_t(0));
+    grow(aux_pick_, std::int32_t(-1));
+  }
+  // Zeroes aux_key_ after flips stamped it (before insertion or relocation reads it).
+  void clear_marks() {
+    if (!marks_dirty_) return;
+    aux_key_.memset(0);
+    marks_dirty_ = false;
   }
   mesh::SlotSource claim(std::int64_t k) {
     mesh::SlotSource src = mesh_.claim(k);
@@ -311,18 +346,10 @@ class GFlip3D {
                 shared += tets[t].v[face_vertex(i, k)] == tets[u].v[face_vertex(j, l)];
             if (shared == 3) opp[4 * t + i] = pack_facet(u, j);
           }
-    mesh_.reserve(std::max<std::int64_t>(8 * n_ + 64, 64));
-    mesh_.tets().assign(tets.data(), 5);
-    mesh_.tets().resize(static_cast<std::size_t>(mesh_.capacity()));
-    mesh_.opp().assign(opp.data(), 20);
-    mesh_.opp().resize(static_cast<std::size_t>(4 * mesh_.capacity()));
-    std::vector<std::uint8_t> state(5, mesh::kAlive);
-    mesh_.state().assign(state.data(), 5);
-    mesh_.state().resize(static_cast<std::size_t>(mesh_.capacity()));
-    {
-      std::uint8_t* sp = mesh_.state().data();
-      par::parallel_for(ctx_, mesh_.capacity() - 5, [=] GDEL_HD(std::int64_t k) { sp[5 + k] = 0; });
-    }
+    mesh_.reserve(initial_slots());  // fresh slots are dead
+    par::detail::Memory<B>::from_host(ctx_, mesh_.tets().data(), tets.data(), 5 * sizeof(mesh::Tet));
+    par::detail::Memory<B>::from_host(ctx_, mesh_.opp().data(), opp.data(), 20 * sizeof(fid_t));
+    par::fill(ctx_, mesh_.state().data(), 5, std::uint8_t(mesh::kAlive));
     mesh_.face_flags().memset(0);
     mesh_.set_size(5);
     grow_aux();
@@ -469,12 +496,13 @@ class GFlip3D {
   }
   static constexpr int kDefaultTieMode = 0;
   std::int64_t insert_round() {
+    clear_marks();
     MeshView m = mesh_.view();
     const Geo g = geo();
     const vid_t* U = todo_.data();
     const std::int64_t u = static_cast<std::int64_t>(todo_.size());
     tid_t* vt = vert_tet_.data();
-    std::uint64_t* best = aux_best_.data();
+    std::uint64_t* best = aux_key_.data();
     const InsertionRule rule = cfg_.rule;
     const double is = inv_scale_;
     const int tie = tie_mode_;
@@ -521,8 +549,8 @@ class GFlip3D {
     // 3. slots: 3 new per split (child 0 reuses the split tet's slot)
     const mesh::SlotSource src = claim(3 * k);
     m = mesh_.view();
-    best = aux_best_.data();
-    std::int32_t* split_of = aux_split_.data();
+    best = aux_key_.data();
+    std::int32_t* split_of = aux_pick_.data();
     Buffer<tid_t, B> child(ctx_, static_cast<std::size_t>(4 * k));
     Buffer<mesh::Tet, B> old(ctx_, static_cast<std::size_t>(k));
     Buffer<vid_t, B> newp(ctx_, static_cast<std::size_t>(k));
@@ -617,11 +645,14 @@ class GFlip3D {
     }
     log_.clear();
     log_iters_.assign(1, 0);
+    const std::int64_t log_cap =
+        std::max<std::int64_t>(std::int64_t(1) << 16, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
     for (std::int64_t it = 0; it < cfg_.max_flip_iterations; ++it) {
       const std::int64_t na = static_cast<std::int64_t>(active_.size());
       if (na == 0) break;
       if (!flip_iteration(na, with_log)) break;
       check_mesh("after flip iteration");
+      if (with_log && static_cast<std::int64_t>(log_.size()) > log_cap) relocate_through_dag();
     }
   }
 
@@ -660,13 +691,14 @@ class GFlip3D {
         ctx_, static_cast<std::size_t>(na), plp, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
     par::mark(ctx_, "flip: select proposers");
     if (np == 0) return 0;
-    // vote: the smallest proposer index wins each tet; accepted flips are disjoint
-    std::int32_t* vote = aux_vote_.data();
+    // vote: the smallest proposer index wins each tet (atomic max of INT_MAX - index, so
+    // that -1 is the empty vote); accepted flips are disjoint
+    std::int32_t* vote = aux_pick_.data();
     par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
       const std::int64_t k = plp[j];
       tid_t ts[3];
       int nt = prop_tets(m, A[k], pp[k], ts);
-      for (int l = 0; l < nt; ++l) par::atomic_min(vote + ts[l], static_cast<std::int32_t>(A[k]));
+      for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], static_cast<std::int32_t>(INT_MAX - A[k]));
     });
     Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(np));
     std::int8_t* ap = acc.data();
@@ -675,14 +707,14 @@ class GFlip3D {
       tid_t ts[3];
       int nt = prop_tets(m, A[k], pp[k], ts);
       bool ok = true;
-      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == static_cast<std::int32_t>(A[k]);
+      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == static_cast<std::int32_t>(INT_MAX - A[k]);
       ap[j] = ok ? 1 : 0;
     });
     par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
       const std::int64_t k = plp[j];
       tid_t ts[3];
       int nt = prop_tets(m, A[k], pp[k], ts);
-      for (int l = 0; l < nt; ++l) vote[ts[l]] = INT_MAX;
+      for (int l = 0; l < nt; ++l) vote[ts[l]] = -1;
     });
     Buffer<std::int64_t, B> fl(ctx_, static_cast<std::size_t>(np));
     std::int64_t* flp = fl.data();
@@ -731,12 +763,9 @@ class GFlip3D {
       }
     }
     // count 2-3 flips: each needs one new slot
-    Buffer<std::int64_t, B> is23(ctx_, static_cast<std::size_t>(nfl));
-    std::int64_t* i23 = is23.data();
-    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { i23[f] = prop_type(pp[flp[f]]) == 1 ? 1 : 0; });
     Buffer<std::int64_t, B> off23(ctx_, static_cast<std::size_t>(nfl + 1));
     std::int64_t* o23 = off23.data();
-    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { o23[f] = i23[f]; });
+    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { o23[f] = prop_type(pp[flp[f]]) == 1 ? 1 : 0; });
     const std::int64_t n23 = par::counts_to_offsets(ctx_, o23, static_cast<std::size_t>(nfl));
     st_.flips23 += n23;
     st_.flips32 += nfl - n23;
@@ -747,12 +776,19 @@ class GFlip3D {
     const std::int64_t log0 = static_cast<std::int64_t>(log_.size());
     log_.resize(static_cast<std::size_t>(log0 + nfl));
     FlipRec* rec = log_.data() + log0;
-    std::int32_t* mark = aux_mark_.data();
-    fid_t* msg = msg_.data();
-    const std::int32_t iter = static_cast<std::int32_t>(st_.flip_iterations & 0x7fffffff);
+    // Every flip has 6 external faces (2-3: 2 old tets x 3; 3-2: 3 x 2). Entry 6f + e
+    // holds the new facet (en), the old tet's facet it replaces (ef: o << 2 | face, for
+    // old tet in[o] of the record) and that facet's neighbour (eo). A flip's old tets are
+    // stamped with (iteration, f) in aux_key_, so that a neighbour taken by another flip
+    // of this iteration finds its new facet among that flip's entries.
+    std::uint64_t* mark = aux_key_.data();
+    const std::uint64_t stamp = static_cast<std::uint64_t>((st_.flip_iterations & 0x7fffffff) + 1) << 32;
+    marks_dirty_ = true;
     Buffer<fid_t, B> ext_new(ctx_, static_cast<std::size_t>(6 * nfl));
+    Buffer<std::uint8_t, B> ext_from(ctx_, static_cast<std::size_t>(6 * nfl));
     Buffer<fid_t, B> ext_old(ctx_, static_cast<std::size_t>(6 * nfl));
     fid_t* en = ext_new.data();
+    std::uint8_t* ef = ext_from.data();
     fid_t* eo = ext_old.data();
     Buffer<std::int8_t, B> und2(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(nfl, 1)));
     // flip kernel: (a) build records and new tets' vertices (3-2 ordering may need
@@ -779,7 +815,7 @@ class GFlip3D {
           ov[o][l] = m.tet[r.in[o]].v[l];
           oopp[o][l] = m.opp[4 * std::int64_t(r.in[o]) + l];
         }
-      for (int o = 0; o < no; ++o) mark[r.in[o]] = iter;
+      for (int o = 0; o < no; ++o) mark[r.in[o]] = stamp | static_cast<std::uint64_t>(f);
       int ne = 0;
       for (int a = 0; a < nn; ++a) {
         const tid_t sa = r.out[a];
@@ -803,8 +839,8 @@ class GFlip3D {
           for (int o = 0; o < no; ++o) {
             if (!has_face(ov[o], fvx)) continue;
             const int lo = opposite_of_face(ov[o], fvx);
-            msg[4 * std::int64_t(r.in[o]) + lo] = pack_facet(sa, l);
             en[6 * f + ne] = pack_facet(sa, l);
+            ef[6 * f + ne] = static_cast<std::uint8_t>(o << 2 | lo);
             eo[6 * f + ne] = oopp[o][lo];
             ++ne;
             m.set_face_flags(sa, l, 0);
@@ -821,8 +857,12 @@ class GFlip3D {
       if (nb >= 0) {
         const tid_t u = facet_tet(nb);
         const int j = facet_face(nb);
-        if (mark[u] == iter) {
-          nb = msg[4 * std::int64_t(u) + j];
+        const std::uint64_t mk = mark[u];
+        if ((mk & ~std::uint64_t(0xffffffff)) == stamp) {  // u was taken by flip g of this iteration
+          const std::int64_t g = static_cast<std::int64_t>(mk & 0xffffffff);
+          int k = 0;
+          while (k < 5 && pack_facet(rec[g].in[ef[6 * g + k] >> 2], ef[6 * g + k] & 3) != nb) ++k;
+          nb = en[6 * g + k];
         } else {
           m.opp[4 * std::int64_t(u) + j] = nf;
           m.set_face_flags(u, j, 0);
@@ -857,7 +897,7 @@ class GFlip3D {
     par::mark(ctx_, "flip: next active set");
     if (with_log) log_iters_.push_back(static_cast<std::int64_t>(log_.size()));
     else log_.clear();
-    st_.flip_iterations++;  // also the stamp (aux_mark_) of the next iteration's flips
+    st_.flip_iterations++;  // also the stamp (aux_key_) of the next iteration's flips
     return nfl;
   }
 
@@ -885,7 +925,7 @@ class GFlip3D {
     bool saved = false;  // `kept` holds a state with `best` facets
     int stale = 0;
     for (int r = 0; r < cfg_.nonoptimal_rounds && cnt > 0; ++r) {
-      if (cnt == best && !saved) {
+      if (cfg_.nonoptimal_keep_best && cnt == best && !saved) {
         kept.copy_from(mesh_);
         saved = true;
       }
@@ -900,11 +940,12 @@ class GFlip3D {
         break;
       }
     }
-    if (cnt > best) {
+    if (cfg_.nonoptimal_keep_best && cnt > best) {
       mesh_.copy_from(kept);
       grow_aux();
+      cnt = best;
     }
-    st_.nonld_facets_kept = best;
+    st_.nonld_facets_kept = cnt;
     active_.resize(0);
   }
 
@@ -916,11 +957,12 @@ class GFlip3D {
     Buffer<std::int8_t, B> sg(ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(nt, 1)));
     const std::int8_t* sp = sg.data();
     st_.exact_evaluations += facet_signs(ctx_, m, nt, geo(), sg.data());
-    Buffer<std::int64_t, B> fl(ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(nt, 1)));
-    std::int64_t* fp = fl.data();
+    auto positive = [=] GDEL_HD(std::int64_t f) { return sp[f] > 0; };
     // (not const: see commit_flips' note on nvcc)
-    std::int64_t k = static_cast<std::int64_t>(par::select_indices(
-        ctx_, static_cast<std::size_t>(4 * nt), fp, [=] GDEL_HD(std::int64_t f) { return sp[f] > 0; }));
+    std::int64_t k = par::count_indices(ctx_, static_cast<std::size_t>(4 * nt), positive);
+    Buffer<std::int64_t, B> fl(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(k, 1)));
+    std::int64_t* fp = fl.data();
+    par::select_indices(ctx_, static_cast<std::size_t>(4 * nt), fp, positive);
     sides.resize(static_cast<std::size_t>(2 * k));
     tid_t* s = sides.data();
     par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t j) {
@@ -1002,10 +1044,11 @@ class GFlip3D {
     std::int64_t ns = static_cast<std::int64_t>(  // (not const: nvcc, as above)
         par::select_indices(ctx_, static_cast<std::size_t>(n), sl, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
     if (ns == 0) return 0;
-    // one proposal per carrying tet: the smallest position wins (vote array, reset after)
-    std::int32_t* vote = aux_vote_.data();
+    // one proposal per carrying tet: the smallest position wins (vote array as in
+    // commit_flips, reset after)
+    std::int32_t* vote = aux_pick_.data();
     par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) {
-      par::atomic_min(vote + proposal_tet(pp[sl[j]]), static_cast<std::int32_t>(j));
+      par::atomic_max(vote + proposal_tet(pp[sl[j]]), static_cast<std::int32_t>(INT_MAX - j));
     });
     Buffer<tid_t, B> A(ctx_, static_cast<std::size_t>(ns));
     Buffer<std::int32_t, B> code(ctx_, static_cast<std::size_t>(ns));
@@ -1014,9 +1057,9 @@ class GFlip3D {
     par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) {
       const tid_t t = proposal_tet(pp[sl[j]]);
       ap[j] = t;
-      cp[j] = vote[t] == static_cast<std::int32_t>(j) ? proposal_code(pp[sl[j]]) : -1;
+      cp[j] = vote[t] == static_cast<std::int32_t>(INT_MAX - j) ? proposal_code(pp[sl[j]]) : -1;
     });
-    par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) { vote[ap[j]] = INT_MAX; });
+    par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) { vote[ap[j]] = -1; });
     par::mark(ctx_, "non-optimal flips: propose");
     return commit_flips(ap, ns, cp, /*with_log=*/false);
   }
@@ -1036,36 +1079,37 @@ class GFlip3D {
     const vid_t* U = todo_.data();
     tid_t* vt = vert_tet_.data();
     par::parallel_for(ctx_, static_cast<std::int64_t>(todo_.size()), [=] GDEL_HD(std::int64_t i) { vt[U[i]] = rm[vt[U[i]]]; });
-    // per-tet auxiliary state is all at its reset value between rounds, except the
-    // flip stamps (aux_mark_), which only matter when equal to the current iteration
+    // per-tet auxiliary state is all at its reset value between rounds, but for stale
+    // flip stamps, which never match a later iteration (insert_round clears them)
     grow_aux();
   }
 
   // --- relocation of uninserted points through the flip DAG --------------------------
+  // The log's records become the DAG's nodes: out[o] is overwritten in place with the
+  // next flip that consumed that slot (>= 0) or ~slot (< 0) when none did, so a walk
+  // from a point's old slot ends at the slot holding it now. Needs fewer than 2^31
+  // records (flip_loop keeps the log far below: log_records_per_point).
   void relocate_through_dag() {
     const std::int64_t nrec = static_cast<std::int64_t>(log_.size());
     if (nrec == 0) return;
+    if (nrec > INT_MAX) throw Error("gflip3d: flip log of over 2^31 records");
     grow_aux();
-    std::int64_t* next = aux_next_.data();
+    clear_marks();
+    std::uint64_t* next = aux_key_.data();  // 1 + flip, 0: none
     FlipRec* rec = log_.data();
-    log_next_.resize(static_cast<std::size_t>(3 * nrec));
-    std::int64_t* rn = log_next_.data();
     // backwards: outputs point at the next flip consuming their slot (or ~slot)
     for (std::size_t it = log_iters_.size() - 1; it > 0; --it) {
       const std::int64_t lo = log_iters_[it - 1], hi = log_iters_[it];
       par::parallel_for(ctx_, hi - lo, [=] GDEL_HD(std::int64_t k) {
         const std::int64_t f = lo + k;
-        const FlipRec& r = rec[f];
+        FlipRec& r = rec[f];
         for (int o = 0; o < 3; ++o) {
-          if (r.out[o] < 0) {
-            rn[3 * f + o] = -1;
-            continue;
-          }
-          const std::int64_t nf = next[r.out[o]];
-          rn[3 * f + o] = nf >= 0 ? nf : ~std::int64_t(r.out[o]);
+          if (r.out[o] < 0) continue;  // no third output (3-2): never followed
+          const std::int64_t nf = static_cast<std::int64_t>(next[r.out[o]]) - 1;
+          r.out[o] = static_cast<tid_t>(nf >= 0 ? nf : ~std::int64_t(r.out[o]));
         }
         for (int o = 0; o < 3; ++o)
-          if (r.in[o] >= 0) next[r.in[o]] = f;
+          if (r.in[o] >= 0) next[r.in[o]] = static_cast<std::uint64_t>(f + 1);
       });
     }
     const vid_t* U = todo_.data();
@@ -1074,12 +1118,12 @@ class GFlip3D {
     const Geo g = geo();
     auto walk = [=] GDEL_HD(std::int64_t i, double* work, bool exact) -> bool {
       const vid_t q = U[i];
-      std::int64_t node = next[vt[q]];
+      std::int64_t node = static_cast<std::int64_t>(next[vt[q]]) - 1;
       if (node < 0) return true;
       while (node >= 0) {
         int c = exact ? dag_child<true>(g, rec[node], q, work) : dag_child<false>(g, rec[node], q, work);
         if (c < 0) return false;
-        node = rn[3 * node + c];
+        node = rec[node].out[c];
       }
       vt[q] = static_cast<tid_t>(~node);
       return true;
@@ -1092,7 +1136,7 @@ class GFlip3D {
     // reset next[] for the consumed slots
     par::parallel_for(ctx_, nrec, [=] GDEL_HD(std::int64_t f) {
       for (int o = 0; o < 3; ++o)
-        if (rec[f].in[o] >= 0) next[rec[f].in[o]] = -1;
+        if (rec[f].in[o] >= 0) next[rec[f].in[o]] = 0;
     });
     log_.clear();
     log_iters_.assign(1, 0);
@@ -1109,14 +1153,10 @@ class GFlip3D {
   Buffer<tid_t, B> vert_tet_;  // per point: tet holding it while uninserted, -1 once inserted
   Buffer<vid_t, B> todo_;      // uninserted points
   Buffer<tid_t, B> active_;
-  Buffer<std::uint64_t, B> aux_best_;
-  Buffer<std::int32_t, B> aux_split_;
-  Buffer<std::int32_t, B> aux_vote_;
-  Buffer<std::int32_t, B> aux_mark_;
-  Buffer<std::int64_t, B> aux_next_;
-  Buffer<fid_t, B> msg_;
+  Buffer<std::uint64_t, B> aux_key_;  // per tet slot; see grow_aux for the three
+  Buffer<std::int32_t, B> aux_pick_;
+  bool marks_dirty_ = false;  // aux_key_ holds flip stamps
   Buffer<FlipRec, B> log_;
-  Buffer<std::int64_t, B> log_next_;
   std::vector<std::int64_t> log_iters_{0};
   double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0, t_reorder_ = 0;
   bool debug_ = false;

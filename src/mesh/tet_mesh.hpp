@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "mesh/conventions.hpp"
@@ -89,16 +90,22 @@ class TetMesh {
     return par::reduce_sum(*ctx_, ap, static_cast<std::size_t>(n));
   }
 
-  // Capacity for at least n slots; contents kept; new slots are free and dead.
+  // Capacity for at least n slots; contents kept; new slots are free and dead. Growth
+  // is by a quarter at least (amortised), not by half: the mesh is most of a run's
+  // memory, and each array is moved alone, so a growth step needs its largest array
+  // (opp) once more, 1.25 times over.
   void reserve(std::int64_t n) {
     std::int64_t old = capacity();
     if (n <= old) return;
-    std::int64_t cap = std::max<std::int64_t>(n, old + old / 2);
-    tet_.resize(static_cast<std::size_t>(cap));
-    opp_.resize(static_cast<std::size_t>(4 * cap));
-    state_.resize(static_cast<std::size_t>(cap));
-    fflag_.resize(static_cast<std::size_t>(4 * cap));
-    free_.resize(static_cast<std::size_t>(cap));
+    std::int64_t cap = std::max<std::int64_t>(n, old + old / 4);
+    auto grow = [cap](auto& buf, std::int64_t per) {
+      buf.reserve(static_cast<std::size_t>(per * cap));
+      buf.resize(static_cast<std::size_t>(per * cap));
+    };
+    grow(tet_, 1);
+    grow(opp_, 4);
+    grow(state_, 1);
+    grow(fflag_, 4);
     std::uint8_t* st = state_.data();
     par::parallel_for(*ctx_, cap - old, [=] GDEL_HD(std::int64_t k) { st[old + k] = 0; });
   }
@@ -117,6 +124,7 @@ class TetMesh {
   // Marks the k slots of `slots` dead and pushes them on the free stack, in order.
   void release(const tid_t* slots, std::int64_t k) {
     if (k <= 0) return;
+    if (free_.size() < static_cast<std::size_t>(free_count_ + k)) free_.resize(static_cast<std::size_t>(free_count_ + k));
     tid_t* st = free_.data();
     std::uint8_t* state = state_.data();
     const std::int64_t top = free_count_;
@@ -138,6 +146,7 @@ class TetMesh {
     M::copy(*ctx_, opp_.data(), o.opp_.data(), static_cast<std::size_t>(4 * n) * sizeof(fid_t));
     M::copy(*ctx_, state_.data(), o.state_.data(), static_cast<std::size_t>(n));
     M::copy(*ctx_, fflag_.data(), o.fflag_.data(), static_cast<std::size_t>(4 * n));
+    if (free_.size() < static_cast<std::size_t>(o.free_count_)) free_.resize(static_cast<std::size_t>(o.free_count_));
     M::copy(*ctx_, free_.data(), o.free_.data(), static_cast<std::size_t>(o.free_count_) * sizeof(tid_t));
     if (size_ > n) {
       std::uint8_t* st = state_.data();
@@ -152,8 +161,9 @@ class TetMesh {
   }
 
   // Moves alive tets to [0, alive) keeping their order, remaps neighbour references;
-  // returns old->new map (-1 for dead slots). Free stack emptied.
-  par::Buffer<tid_t, B> compact() {
+  // returns old->new map (-1 for dead slots). Free stack emptied. shrink: the capacity
+  // becomes the alive count (for a finished mesh: the output stage).
+  par::Buffer<tid_t, B> compact(bool shrink = false) {
     std::int64_t n = size();
     par::Buffer<tid_t, B> remap(*ctx_, static_cast<std::size_t>(n + 1));
     tid_t* rm = remap.data();
@@ -163,7 +173,7 @@ class TetMesh {
     par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
       if (!(st[t] & kAlive)) rm[t] = -1;
     });
-    apply_remap(rm, alive);
+    apply_remap(rm, alive, shrink);
     return remap;
   }
 
@@ -195,35 +205,37 @@ class TetMesh {
   }
 
   // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
-  // remapped; slots [0, alive) are then in use and the free stack is empty.
-  void apply_remap(const tid_t* rm, std::int64_t alive) {
+  // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
+  // a time, so that the step needs the largest array (opp) twice, not the whole mesh.
+  // shrink: capacity = alive.
+  void apply_remap(const tid_t* rm, std::int64_t alive, bool shrink = false) {
     const std::int64_t n = size();
-    par::Buffer<Tet, B> t2(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
-    par::Buffer<fid_t, B> o2(*ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(capacity(), 1)));
-    par::Buffer<std::uint8_t, B> s2(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
-    par::Buffer<std::uint8_t, B> f2(*ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(capacity(), 1)));
-    Tet* tp = t2.data();
-    fid_t* op = o2.data();
+    const std::int64_t cap = std::max<std::int64_t>(shrink ? alive : capacity(), 1);
+    const std::uint8_t* st = state_.data();
+    // moves per-slot records of `per` elements of buf to their new slots (x: the element)
+    auto move = [&](auto& buf, std::int64_t per, auto x) {
+      using T = std::remove_reference_t<decltype(*buf.data())>;
+      par::Buffer<T, B> nb(*ctx_, static_cast<std::size_t>(per * cap));
+      T* dst = nb.data();
+      const T* src = buf.data();
+      par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
+        const tid_t d = rm[t];
+        if (d < 0) return;
+        for (std::int64_t i = 0; i < per; ++i) dst[per * std::int64_t(d) + i] = x(src[per * t + i]);
+      });
+      buf = std::move(nb);
+    };
+    move(tet_, 1, [] GDEL_HD(const Tet& x) { return x; });
+    move(opp_, 4, [=] GDEL_HD(fid_t o) { return o < 0 ? o : pack_facet(rm[facet_tet(o)], facet_face(o)); });
+    move(fflag_, 4, [] GDEL_HD(std::uint8_t x) { return x; });
+    par::Buffer<std::uint8_t, B> s2(*ctx_, static_cast<std::size_t>(cap));
     std::uint8_t* sp = s2.data();
-    std::uint8_t* fp = f2.data();
-    MeshView v = view();
+    par::parallel_for(*ctx_, cap, [=] GDEL_HD(std::int64_t k) { sp[k] = 0; });
     par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
-      tid_t d = rm[t];
-      if (d < 0) return;
-      tp[d] = v.tet[t];
-      sp[d] = v.state[t];
-      for (int i = 0; i < 4; ++i) {
-        fp[4 * std::int64_t(d) + i] = v.fflag[4 * t + i];
-        fid_t o = v.opp[4 * t + i];
-        op[4 * std::int64_t(d) + i] = o < 0 ? o : pack_facet(rm[facet_tet(o)], facet_face(o));
-      }
+      if (rm[t] >= 0) sp[rm[t]] = st[t];
     });
-    std::int64_t cap = capacity();
-    par::parallel_for(*ctx_, cap - alive, [=] GDEL_HD(std::int64_t k) { sp[alive + k] = 0; });
-    tet_ = std::move(t2);
-    opp_ = std::move(o2);
     state_ = std::move(s2);
-    fflag_ = std::move(f2);
+    free_.release();
     size_ = alive;
     free_count_ = 0;
   }
@@ -246,7 +258,7 @@ class TetMesh {
   par::Buffer<fid_t, B> opp_;
   par::Buffer<std::uint8_t, B> state_;
   par::Buffer<std::uint8_t, B> fflag_;
-  par::Buffer<tid_t, B> free_;
+  par::Buffer<tid_t, B> free_;  // the free stack: as long as it has ever been deep, not the capacity
   std::int64_t size_ = 0;        // high-water mark of used slots
   std::int64_t free_count_ = 0;  // entries on the free stack
 };

@@ -36,9 +36,8 @@ class MemoryStats {
  public:
   void add(std::size_t bytes) {
     std::size_t now = current_.fetch_add(bytes, std::memory_order_relaxed) + bytes;
-    std::size_t p = peak_.load(std::memory_order_relaxed);
-    while (now > p && !peak_.compare_exchange_weak(p, now, std::memory_order_relaxed)) {
-    }
+    raise(peak_, now);
+    raise(interval_peak_, now);
   }
   void sub(std::size_t bytes) { current_.fetch_sub(bytes, std::memory_order_relaxed); }
   // A cap on current() for the CUDA allocator (0: none), from Options::device_memory_limit.
@@ -47,10 +46,21 @@ class MemoryStats {
   std::size_t current() const { return current_.load(std::memory_order_relaxed); }
   std::size_t peak() const { return peak_.load(std::memory_order_relaxed); }
   void reset_peak() { peak_.store(current(), std::memory_order_relaxed); }
+  // The peak since the previous call (or since construction), then restarted from now:
+  // the profiler's per-step memory (parallel/profile.hpp).
+  std::size_t take_interval_peak() {
+    return interval_peak_.exchange(current(), std::memory_order_relaxed);
+  }
 
  private:
+  static void raise(std::atomic<std::size_t>& a, std::size_t now) {
+    std::size_t p = a.load(std::memory_order_relaxed);
+    while (now > p && !a.compare_exchange_weak(p, now, std::memory_order_relaxed)) {
+    }
+  }
   std::atomic<std::size_t> current_{0};
   std::atomic<std::size_t> peak_{0};
+  std::atomic<std::size_t> interval_peak_{0};
   std::size_t limit_ = 0;
 };
 
@@ -73,12 +83,15 @@ class Context<Cpu> {
     if (!prof_on_) return;
     prof_names_.push_back(name);
     prof_t_.push_back(now());
+    prof_peak_.push_back(mem_.take_interval_peak());
   }
   void profile_start() {
     prof_names_.clear();
+    prof_peak_.clear();
     prof_t_.assign(1, now());
+    mem_.take_interval_peak();
   }
-  ProfileTotals profile_report() const { return profile_totals(prof_names_, prof_t_); }
+  ProfileTotals profile_report() const { return profile_totals(prof_names_, prof_t_, prof_peak_); }
 
  private:
   static double now() {
@@ -88,6 +101,7 @@ class Context<Cpu> {
   bool prof_on_ = profiling_requested();
   std::vector<const char*> prof_names_;
   std::vector<double> prof_t_;
+  std::vector<std::size_t> prof_peak_;  // memory peak of each interval
 };
 
 #if defined(__CUDACC__)
@@ -112,6 +126,7 @@ class Context<Cuda> {
   void mark(const char* name) {
     if (!prof_on_) return;
     prof_names_.push_back(name);
+    prof_peak_.push_back(mem_.take_interval_peak());
     record_event();
   }
   void profile_start();
@@ -125,6 +140,7 @@ class Context<Cuda> {
   int sm_count_ = 1;
   bool prof_on_ = profiling_requested();
   std::vector<const char*> prof_names_;
+  std::vector<std::size_t> prof_peak_;  // memory peak of each interval
   std::vector<cudaEvent_t> prof_events_;  // pool; the first prof_used_ are recorded
   std::size_t prof_used_ = 0;
 };

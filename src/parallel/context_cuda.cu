@@ -37,7 +37,9 @@ void Context<Cuda>::record_event() {
 void Context<Cuda>::profile_start() {
   if (!prof_on_) return;
   prof_names_.clear();
+  prof_peak_.clear();
   prof_used_ = 0;
+  mem_.take_interval_peak();
   record_event();
 }
 
@@ -50,7 +52,7 @@ ProfileTotals Context<Cuda>::profile_report() {
     GDEL_CUDA_CHECK(cudaEventElapsedTime(&ms, prof_events_[0], prof_events_[k]));
     t[k] = 1e-3 * ms;
   }
-  return profile_totals(prof_names_, t);
+  return profile_totals(prof_names_, t, prof_peak_);
 }
 
 void Context<Cuda>::synchronize() { GDEL_CUDA_CHECK(cudaStreamSynchronize(stream_)); }

@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include <thrust/copy.h>
+#include <thrust/count.h>
 #include <thrust/execution_policy.h>
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/reduce.h>
@@ -90,6 +91,13 @@ std::size_t select_indices(Context<Cpu>&, std::size_t n, I* out, Pred pred) {
   return with_policy(n, [&](auto pol) {
     return static_cast<std::size_t>(thrust::copy_if(pol, first, first + n, out, pred) - out);
   });
+}
+// Number of indices i in [0, n) with pred(i) (synchronizes): to size an output exactly
+// before select_indices when few are expected.
+template <class Pred>
+std::int64_t count_indices(Context<Cpu>&, std::size_t n, Pred pred) {
+  thrust::counting_iterator<std::int64_t> first(0);
+  return with_policy(n, [&](auto pol) { return static_cast<std::int64_t>(thrust::count_if(pol, first, first + n, pred)); });
 }
 namespace detail {
 // Thrust 3.0's OpenMP stable sort mis-orders negative signed integer keys (its radix
@@ -247,6 +255,25 @@ std::size_t select_indices(Context<Cuda>& c, std::size_t n, I* out, Pred pred) {
     return cub::DeviceSelect::If(t, b, first, out, cp, static_cast<std::int64_t>(n), pred, c.stream());
   });
   return static_cast<std::size_t>(cnt.get(0));
+}
+namespace detail {
+template <class Pred>
+struct OneIf {
+  Pred pred;
+  __host__ __device__ std::int64_t operator()(std::int64_t i) const { return pred(i) ? 1 : 0; }
+};
+}  // namespace detail
+template <class Pred>
+std::int64_t count_indices(Context<Cuda>& c, std::size_t n, Pred pred) {
+  if (!n) return 0;
+  Buffer<std::int64_t, Cuda> r(c, 1);
+  std::int64_t* rp = r.data();
+  thrust::counting_iterator<std::int64_t> first(0);
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceReduce::TransformReduce(t, b, first, rp, static_cast<std::int64_t>(n), cuda::std::plus<>{},
+                                              detail::OneIf<Pred>{pred}, std::int64_t(0), c.stream());
+  });
+  return r.get(0);
 }
 template <class K>
 void sort_keys(Context<Cuda>& c, K* keys, std::size_t n, int end_bit = int(sizeof(K) * 8)) {

@@ -4,11 +4,16 @@
 // step with par::mark(ctx, "name"); the time from the previous mark to this one is
 // charged to "name". On the CUDA backend a mark records an event on the context's stream
 // (no synchronisation: the times are those of the GPU timeline, idle gaps included); on
-// the CPU backend it reads the wall clock. Context::profile_report() (synchronizes)
-// returns the totals per name in first-seen order; the API prints them to stderr at the
-// end of a call. A mark costs one branch when profiling is off.
+// the CPU backend it reads the wall clock. Each mark also records the highest count of
+// bytes held in the context's buffers since the previous mark (MemoryStats'
+// interval peak, host-side accounting, so both backends alike): the report gives, per
+// name, the largest of these, which tells which step sets the call's peak memory.
+// Context::profile_report() (synchronizes) returns the totals per name in first-seen
+// order; the API prints them to stderr at the end of a call. A mark costs one branch
+// when profiling is off.
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -17,34 +22,45 @@
 
 namespace gdel::par {
 
-using ProfileTotals = std::vector<std::pair<std::string, double>>;  // (step, seconds)
+struct ProfileEntry {
+  std::string name;
+  double seconds = 0;
+  std::size_t peak_bytes = 0;  // the most bytes held at any time during one of its intervals
+};
+using ProfileTotals = std::vector<ProfileEntry>;
 
 inline bool profiling_requested() { return std::getenv("GDEL_PROFILE") != nullptr; }
 
-// Totals per name: mark k (name names[k]) closes the interval (t[k], t[k+1]]; t holds
-// one more entry than names (t[0]: the origin).
-inline ProfileTotals profile_totals(const std::vector<const char*>& names, const std::vector<double>& t) {
+// Totals per name: mark k (name names[k]) closes the interval (t[k], t[k+1]], whose
+// memory peak is peaks[k]; t holds one more entry than names (t[0]: the origin).
+inline ProfileTotals profile_totals(const std::vector<const char*>& names, const std::vector<double>& t,
+                                    const std::vector<std::size_t>& peaks) {
   ProfileTotals out;
   for (std::size_t k = 0; k < names.size() && k + 1 < t.size(); ++k) {
     std::size_t j = 0;
-    while (j < out.size() && out[j].first != names[k]) ++j;
-    if (j == out.size()) out.push_back({names[k], 0.0});
-    out[j].second += t[k + 1] - t[k];
+    while (j < out.size() && out[j].name != names[k]) ++j;
+    if (j == out.size()) out.push_back({names[k], 0.0, 0});
+    out[j].seconds += t[k + 1] - t[k];
+    if (k < peaks.size()) out[j].peak_bytes = std::max(out[j].peak_bytes, peaks[k]);
   }
   return out;
 }
 
 inline std::string format_profile(const ProfileTotals& tot) {
   double sum = 0;
-  for (auto& e : tot) sum += e.second;
-  std::string r;
-  char line[200];
+  std::size_t peak = 0;
   for (auto& e : tot) {
-    std::snprintf(line, sizeof line, "  %-48s %10.3f ms %5.1f %%\n", e.first.c_str(), 1e3 * e.second,
-                  sum > 0 ? 100 * e.second / sum : 0.0);
+    sum += e.seconds;
+    peak = std::max(peak, e.peak_bytes);
+  }
+  std::string r;
+  char line[240];
+  for (auto& e : tot) {
+    std::snprintf(line, sizeof line, "  %-48s %10.3f ms %5.1f %%  peak %10.1f MiB\n", e.name.c_str(), 1e3 * e.seconds,
+                  sum > 0 ? 100 * e.seconds / sum : 0.0, e.peak_bytes / 1048576.0);
     r += line;
   }
-  std::snprintf(line, sizeof line, "  %-48s %10.3f ms\n", "total", 1e3 * sum);
+  std::snprintf(line, sizeof line, "  %-48s %10.3f ms         peak %10.1f MiB\n", "total", 1e3 * sum, peak / 1048576.0);
   return r + line;
 }
 

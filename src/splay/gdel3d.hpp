@@ -391,12 +391,9 @@ class GDel3D {
     const I64 nkeep = par::counts_to_offsets(ctx_, tnp, static_cast<std::size_t>(nt));
     const I64 nout = nkeep + nstar;
     // flat tets dropped (T tets without star vertices, and star tets)
-    {
-      Buffer<I64, B> z(ctx_, static_cast<std::size_t>(nt + 1));
-      I64* zp = z.data();
-      par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) { zp[t] = (t_candidate(t) && flp[t] == 0) ? 1 : 0; });
-      res_.flat_removed = par::reduce_sum(ctx_, zp, static_cast<std::size_t>(nt)) + flat_stars;
-    }
+    res_.flat_removed = par::count_indices(ctx_, static_cast<std::size_t>(nt),
+                                           [=] GDEL_HD(I64 t) { return t_candidate(t) && flp[t] == 0; }) +
+                        flat_stars;
     tets.resize(static_cast<std::size_t>(4 * nout));
     nbr.resize(static_cast<std::size_t>(4 * nout));
     vid_t* op = tets.data();

@@ -662,10 +662,12 @@ class Splayer {
   void match_faces(Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr, I64 nout) {
     std::int32_t* np = nbr.data();
     const vid_t* tp = tets.data();
-    Buffer<I64, B> open(ctx_, static_cast<std::size_t>(std::max<I64>(4 * nout, 1)));
-    const std::size_t k = par::select_indices(ctx_, static_cast<std::size_t>(4 * nout), open.data(),
-                                              [=] GDEL_HD(I64 f) { return np[f] == -2; });
+    auto unmatched = [=] GDEL_HD(I64 f) { return np[f] == -2; };
+    // counted first: the open faces are those of star tets, few beside the 4 nout faces
+    const std::size_t k = static_cast<std::size_t>(par::count_indices(ctx_, static_cast<std::size_t>(4 * nout), unmatched));
     if (k == 0) return;
+    Buffer<I64, B> open(ctx_, k);
+    par::select_indices(ctx_, static_cast<std::size_t>(4 * nout), open.data(), unmatched);
     const I64* fp = open.data();
     auto face = [=] GDEL_HD(I64 f, vid_t* w) {
       const I64 t = f >> 2;
