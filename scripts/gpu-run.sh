@@ -323,6 +323,20 @@ case "$plan" in
     bench c_e6 120 --dist gaussian,ball,thin_shell,grid --n 1000000 --methods gdel3d-cuda,cgal,cgal-par --repeat 1
     bench c_sphere 200 --dist sphere --n 1000000 --methods gdel3d-cuda,cgal --repeat 1
     ;;
+  s9mem)  # 2026-11-25 session 9, memory: the GPU tests of the changed gFlip3D/mesh code, every generator
+           # at 10^6 and uniform 10^7 (time and peak bytes per point; CGAL-par beside), one step profile
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    bench s9_e6 150 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 \
+      --methods auto-cuda,gdel3d-cuda-dev --repeat 3
+    bench s9_e7 90 --dist uniform --n 10000000 --methods gdel3d-cuda-dev,auto-cuda,cgal-par --repeat 1
+    GDEL_PROFILE=1 step s9_e7_profile 40 "$gb" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    ;;
+  s9scale)  # 10^8 uniform points on one GPU (no verification: the verifier needs ≈ 1.5 KB per point), step
+            # profile with memory; 3*10^7 verified
+    GDEL_PROFILE=1 step s9_e8 400 "$gb" --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    bench s9_3e7 150 --dist uniform --n 30000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -154,7 +154,7 @@ struct Triangulation {
 Triangulation delaunay(std::span<const double> points, const Options& options = {});
 
 // The device memory a CUDA run is expected to need for n points (bytes): a fixed 64 MiB
-// plus the peak per point measured on uniform input (bench/RESULTS.md): 2 400 bytes for
+// plus the peak per point measured on uniform input (bench/RESULTS.md): 900 bytes for
 // gflip3d / gdel3d (Auto), 5 400 for gstar4d, and the same 5 400 for gdel::regular
 // (gReg3D, `weighted`). Clustered or surface-like input needs more (up to 1.5x for gdel3d,
 // 1.8x for gstar4d on the thin shell). The CUDA backend compares this with the free device

@@ -16,7 +16,7 @@ const char* to_string(Backend b) {
 }
 
 std::size_t estimated_device_bytes(std::int64_t n, Algorithm algorithm, bool weighted) {
-  const double per_point = weighted || algorithm == Algorithm::gstar4d ? 5400.0 : 2400.0;
+  const double per_point = weighted || algorithm == Algorithm::gstar4d ? 5400.0 : 900.0;
   return (std::size_t(64) << 20) + static_cast<std::size_t>(per_point * static_cast<double>(std::max<std::int64_t>(n, 0)));
 }
 

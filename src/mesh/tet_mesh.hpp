@@ -17,7 +17,6 @@
 
 #include <cstdint>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "mesh/conventions.hpp"
@@ -212,22 +211,10 @@ class TetMesh {
     const std::int64_t n = size();
     const std::int64_t cap = std::max<std::int64_t>(shrink ? alive : capacity(), 1);
     const std::uint8_t* st = state_.data();
-    // moves per-slot records of `per` elements of buf to their new slots (x: the element)
-    auto move = [&](auto& buf, std::int64_t per, auto x) {
-      using T = std::remove_reference_t<decltype(*buf.data())>;
-      par::Buffer<T, B> nb(*ctx_, static_cast<std::size_t>(per * cap));
-      T* dst = nb.data();
-      const T* src = buf.data();
-      par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
-        const tid_t d = rm[t];
-        if (d < 0) return;
-        for (std::int64_t i = 0; i < per; ++i) dst[per * std::int64_t(d) + i] = x(src[per * t + i]);
-      });
-      buf = std::move(nb);
-    };
-    move(tet_, 1, [] GDEL_HD(const Tet& x) { return x; });
-    move(opp_, 4, [=] GDEL_HD(fid_t o) { return o < 0 ? o : pack_facet(rm[facet_tet(o)], facet_face(o)); });
-    move(fflag_, 4, [] GDEL_HD(std::uint8_t x) { return x; });
+    remap_records(tet_, 1, cap, rm, [] GDEL_HD(const Tet& x) { return x; });
+    remap_records(opp_, 4, cap, rm,
+                  [=] GDEL_HD(fid_t o) { return o < 0 ? o : pack_facet(rm[facet_tet(o)], facet_face(o)); });
+    remap_records(fflag_, 4, cap, rm, [] GDEL_HD(std::uint8_t x) { return x; });
     par::Buffer<std::uint8_t, B> s2(*ctx_, static_cast<std::size_t>(cap));
     std::uint8_t* sp = s2.data();
     par::parallel_for(*ctx_, cap, [=] GDEL_HD(std::int64_t k) { sp[k] = 0; });
@@ -238,6 +225,21 @@ class TetMesh {
     free_.release();
     size_ = alive;
     free_count_ = 0;
+  }
+
+  // apply_remap's step for one array: buf's per-slot records of `per` elements moved to
+  // their new slots in a new array of cap slots (x: the element's new value).
+  template <class T, class X>
+  void remap_records(par::Buffer<T, B>& buf, std::int64_t per, std::int64_t cap, const tid_t* rm, X x) {
+    par::Buffer<T, B> nb(*ctx_, static_cast<std::size_t>(per * cap));
+    T* dst = nb.data();
+    const T* src = buf.data();
+    par::parallel_for(*ctx_, size(), [=] GDEL_HD(std::int64_t t) {
+      const tid_t d = rm[t];
+      if (d < 0) return;
+      for (std::int64_t i = 0; i < per; ++i) dst[per * std::int64_t(d) + i] = x(src[per * t + i]);
+    });
+    buf = std::move(nb);
   }
 
   par::Buffer<Tet, B>& tets() { return tet_; }
