@@ -334,8 +334,12 @@ case "$plan" in
     ;;
   s9scale)  # 10^8 uniform points on one GPU (no verification: the verifier needs ≈ 1.5 KB per point), step
             # profile with memory; 3*10^7 verified
-    GDEL_PROFILE=1 step s9_e8 400 "$gb" --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
-    bench s9_3e7 150 --dist uniform --n 30000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 step s9_e8 300 "$gb" --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    bench s9_3e7 100 --dist uniform --n 30000000 --methods gdel3d-cuda-dev --repeat 1
+    # the anchors were taken on an H200: the same table there
+    bench s9h_e6 90 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods auto-cuda,gdel3d-cuda-dev \
+      --repeat 3
+    bench s9h_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev,auto-cuda --repeat 3
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1

@@ -645,8 +645,11 @@ class GFlip3D {
     }
     log_.clear();
     log_iters_.assign(1, 0);
+    // (test knob GDEL_FLIP_LOG_RECORDS: this many records at most, to exercise the flushes)
+    const char* cap_env = std::getenv("GDEL_FLIP_LOG_RECORDS");
     const std::int64_t log_cap =
-        std::max<std::int64_t>(std::int64_t(1) << 16, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
+        cap_env ? std::max<std::int64_t>(1, std::atoll(cap_env))
+                : std::max<std::int64_t>(std::int64_t(1) << 16, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
     for (std::int64_t it = 0; it < cfg_.max_flip_iterations; ++it) {
       const std::int64_t na = static_cast<std::int64_t>(active_.size());
       if (na == 0) break;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
@@ -118,6 +119,30 @@ inline void gflip_degenerate_cases(Backend b) {
   auto tiny = gen::uniform(300, 10);
   for (double& x : tiny) x *= 1e-100;
   expect_flip_output_valid(tiny, delaunay(tiny, o), b);
+}
+
+// The flip log is capped (FlipConfig::log_records_per_point): past the cap the uninserted
+// points are relocated through the flips so far and the log restarts. That must not change
+// anything: the same flips and the same triangulation with a cap of a few records
+// (GDEL_FLIP_LOG_RECORDS), i.e. a relocation after almost every flip iteration.
+inline void gflip_log_flush_cases(Backend b, std::size_t n) {
+  using gen::Distribution;
+  for (auto d : {Distribution::Uniform, Distribution::ThinShell, Distribution::Grid}) {
+    SCOPED_TRACE(std::string(gen::to_string(d)));
+    auto pts = gen::generate(d, n, 5);
+    Options o;
+    o.backend = b;
+    o.algorithm = Algorithm::gflip3d;
+    const Triangulation base = delaunay(pts, o);
+    ::setenv("GDEL_FLIP_LOG_RECORDS", "16", 1);
+    const Triangulation small = delaunay(pts, o);
+    ::unsetenv("GDEL_FLIP_LOG_RECORDS");
+    expect_flip_output_valid(pts, small, b);
+    EXPECT_EQ(small.stats.flips23, base.stats.flips23);
+    EXPECT_EQ(small.stats.flips32, base.stats.flips32);
+    EXPECT_EQ(small.tets, base.tets);
+    EXPECT_EQ(small.neighbors, base.neighbors);
+  }
 }
 
 }  // namespace gdel::test

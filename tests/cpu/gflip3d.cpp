@@ -5,3 +5,4 @@ TEST(GFlip3DCpu, DegenerateAndHostileInput) { gdel::test::gflip_degenerate_cases
 TEST(GFlip3DCpu, NonoptimalFlipsAllGenerators) { gdel::test::nonoptimal_generator_cases(gdel::Backend::Cpu, 2000); }
 TEST(GFlip3DCpu, NonoptimalFlipsReduceStuckFacets) { gdel::test::nonoptimal_reduces_cases(gdel::Backend::Cpu); }
 TEST(GFlip3DCpu, AutoUsesNonoptimalFlipsWhenFewAreStuck) { gdel::test::nonoptimal_auto_cases(gdel::Backend::Cpu); }
+TEST(GFlip3DCpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cpu, 20000); }

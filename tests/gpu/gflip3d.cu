@@ -5,3 +5,4 @@ TEST(GFlip3DGpu, DegenerateAndHostileInput) { gdel::test::gflip_degenerate_cases
 TEST(GFlip3DGpu, NonoptimalFlipsAllGenerators) { gdel::test::nonoptimal_generator_cases(gdel::Backend::Cuda, 50000); }
 TEST(GFlip3DGpu, NonoptimalFlipsReduceStuckFacets) { gdel::test::nonoptimal_reduces_cases(gdel::Backend::Cuda); }
 TEST(GFlip3DGpu, AutoUsesNonoptimalFlipsWhenFewAreStuck) { gdel::test::nonoptimal_auto_cases(gdel::Backend::Cuda); }
+TEST(GFlip3DGpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cuda, 200000); }
