@@ -156,8 +156,9 @@ Triangulation delaunay(std::span<const double> points, const Options& options = 
 // The device memory a CUDA run is expected to need for n points (bytes): a fixed 64 MiB
 // plus the peak per point measured on uniform input (bench/RESULTS.md): 900 bytes for
 // gflip3d / gdel3d (Auto), 5 400 for gstar4d, and the same 5 400 for gdel::regular
-// (gReg3D, `weighted`). Clustered or surface-like input needs more (up to 1.5x for gdel3d,
-// 1.8x for gstar4d on the thin shell). The CUDA backend compares this with the free device
+// (gReg3D, `weighted`). Input whose repair splays many or large stars needs more (gdel3d
+// at 10^6: 2.0x on the grid, 2.8x on the exactly cospherical sphere; gstar4d 1.8x on the
+// thin shell). The CUDA backend compares this with the free device
 // memory (and Options::device_memory_limit) before it starts: when it does not fit, the
 // call fails at once with OutOfDeviceMemory (needed = the estimate, free = what is free),
 // or runs on the CPU with Options::fallback_to_cpu, instead of failing later at an
