@@ -13,9 +13,10 @@
 namespace gdel {
 
 enum class Algorithm {
-  Auto,     // the best available exact algorithm: today gdel3d with non-optimal flipping
-            // when it is stuck on fewer facets than 1 % of the points (bench/RESULTS.md,
-            // 2026-11-24: much faster repair on the grid, no loss elsewhere)
+  Auto,     // the best available exact algorithm: today gdel3d, on the CUDA backend with
+            // non-optimal flipping when it is stuck on fewer facets than 1 % of the points
+            // (bench/RESULTS.md, 2026-11-24: much faster repair on the grid, no loss
+            // elsewhere; on the CPU backend it only costs time, session 9)
   gflip3d,  // parallel insertion + flipping: a near-Delaunay triangulation (failed vertices reported)
   gdel3d,   // gflip3d + parallel star-splaying repair: the exact Delaunay triangulation
   gstar4d,  // digital Voronoi diagram -> working sets -> 4-D stars -> parallel star splaying:

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 
 #include "api/prepare.hpp"
 #include "flip/gflip3d.hpp"
@@ -113,8 +114,11 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   flip::FlipConfig cfg;
   cfg.rule = opt.insertion;
   cfg.terminal = opt.terminal_flipping;
-  // non-optimal flipping: on request, or under Auto when stuck on < 1 % of the points
-  cfg.nonoptimal = opt.nonoptimal_flips || opt.algorithm == Algorithm::Auto;
+  // non-optimal flipping: on request, or under Auto on the GPU when stuck on < 1 % of the
+  // points. Not under Auto on the CPU backend: there its exact facet counts cost 5-40 % of
+  // the run and the repair gains nothing (bench/RESULTS.md, session 9); the exact result is
+  // the same triangulation either way.
+  cfg.nonoptimal = opt.nonoptimal_flips || (opt.algorithm == Algorithm::Auto && !std::is_same_v<B, par::Cpu>);
   if (!opt.nonoptimal_flips) {
     cfg.nonoptimal_max_share = 0.01;
     cfg.nonoptimal_keep_best = false;  // memory: no copy of the mesh (the repair is exact anyway)

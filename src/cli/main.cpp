@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
                   "output file; its extension picks the format: .ele or none (TetGen OUT.node/.ele/.neigh), "
                   ".vtu (VTK), .mesh (Medit), .npz (NumPy)")
       ->required();
-  del->add_option("--algorithm", algorithm, "auto (= gdel3d, exact Delaunay, with non-optimal flips when few facets are stuck) | gdel3d | gstar4d (exact, via 4-D star splaying) | gflip3d "
+  del->add_option("--algorithm", algorithm, "auto (= gdel3d, exact Delaunay; on the GPU with non-optimal flips when few facets are stuck) | gdel3d | gstar4d (exact, via 4-D star splaying) | gflip3d "
                   "(near-Delaunay, unrepaired)")
       ->check(CLI::IsMember(kAlgorithms))
       ->capture_default_str();
