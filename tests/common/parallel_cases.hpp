@@ -71,6 +71,10 @@ void parallel_layer_cases(par::Context<B>& ctx) {
     auto ih = idx.to_host();
     ih.resize(k);
     EXPECT_EQ(ih, ridx);
+    // counting the same selection (to size an output exactly)
+    EXPECT_EQ(count_indices(ctx, n, [=] GDEL_HD(std::int64_t i) { return (ap[i] % 3) == 0; }),
+              static_cast<std::int64_t>(ridx.size()));
+    EXPECT_EQ(count_indices(ctx, 0, [=] GDEL_HD(std::int64_t i) { return ap[i] >= 0; }), 0);
 
     // sort pairs is stable and sort keys sorts
     std::vector<std::uint64_t> keys(n);
