@@ -1,6 +1,8 @@
 // Verifier front: argument checks, backend dispatch, report formatting. The CPU
 // backend is instantiated here; the CUDA one in verify_cuda.cu.
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <sstream>
 
 #include "core/backend_select.hpp"
@@ -61,15 +63,19 @@ VerifyReport verify(std::span<const double> points, std::span<const std::int32_t
   const std::vector<double> sw = api::scaled_weights(weights, k, "verify: weights");
   weights = sw;
   const double* w = weights.empty() ? nullptr : weights.data();
+  // The facet and edge sorts run in chunks of about this many items (memory
+  // bound); GDEL_VERIFY_CHUNK sets it (tests use tiny chunks to cover the path).
+  std::int64_t chunk = 0;
+  if (const char* e = std::getenv("GDEL_VERIFY_CHUNK")) chunk = std::max<long long>(1, std::atoll(e));
   auto t0 = std::chrono::steady_clock::now();
   VerifyReport r;
   if (resolve_backend(backend) == Backend::Cuda) {
 #if defined(GDEL_HAVE_CUDA)
-    r = cuda_backend::verify(points.data(), n, tets.data(), m, w);
+    r = cuda_backend::verify(points.data(), n, tets.data(), m, w, chunk);
 #endif
   } else {
     par::Context<par::Cpu> ctx;
-    r = verify_detail::run(ctx, points.data(), n, tets.data(), m, w);
+    r = verify_detail::run(ctx, points.data(), n, tets.data(), m, w, chunk ? chunk : std::int64_t(1) << 26);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
