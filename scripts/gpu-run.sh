@@ -341,6 +341,18 @@ case "$plan" in
       --repeat 3
     bench s9h_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev,auto-cuda --repeat 3
     ;;
+  s10tests)  # 2026-11-25 session 10: the chunked verifier (GPU against CPU, tiny chunks), the flip cap, the
+              # output that consumes the mesh, the new memory estimate
+    step verify_grid 90 "$tbin/gpu_verify_grid"
+    step gflip3d 180 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step hostile_estimate 90 "$tbin/gpu_hostile" --gtest_filter='*MemoryEstimate*'
+    ;;
+  s10scale)  # 10^8 uniform, verified in the same run (chunked verifier), with the step profile; 10^7 and 10^6
+    GDEL_PROFILE=1 bench s10_e8 420 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s10_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s10_e6 60 --dist uniform,sphere --n 1000000 --methods gdel3d-cuda-dev,auto-cuda --repeat 3
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -186,21 +186,30 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   tid_t* fp = fin.data();
   par::parallel_for(ctx, nt, [=] GDEL_HD(I64 t) { fp[t] = flip::Geo::inf_slot(mv.tet[t].v, inf) < 0 ? 1 : 0; });
   const tid_t nfin = par::counts_to_offsets(ctx, fp, static_cast<std::size_t>(nt));
+  // The mesh is consumed one array at a time, so that the output never sits beside
+  // the whole mesh.
+  mesh.state().release();
+  mesh.face_flags().release();
   Buffer<std::int32_t, B> tv(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
-  Buffer<std::int32_t, B> tn(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
   std::int32_t* tvp = tv.data();
-  std::int32_t* tnp = tn.data();
   const I64* sp = sid.data();
   par::parallel_for(ctx, nt, [=] GDEL_HD(I64 t) {
     if (fp[t + 1] == fp[t]) return;  // infinite tet
+    for (int i = 0; i < 4; ++i) tvp[4 * fp[t] + i] = static_cast<std::int32_t>(sp[mv.tet[t].v[i]]);
+  });
+  mesh.tets().release();
+  Buffer<std::int32_t, B> tn(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
+  std::int32_t* tnp = tn.data();
+  par::parallel_for(ctx, nt, [=] GDEL_HD(I64 t) {
+    if (fp[t + 1] == fp[t]) return;
     const I64 d = fp[t];
     for (int i = 0; i < 4; ++i) {
-      tvp[4 * d + i] = static_cast<std::int32_t>(sp[mv.tet[t].v[i]]);
-      const fid_t o = mv.opp[4 * t + i];
+      const fid_t o = mv.opp(4 * t + i);
       const tid_t u = facet_tet(o);
       tnp[4 * d + i] = (o < 0 || fp[u + 1] == fp[u]) ? -1 : fp[u];
     }
   });
+  mesh.release_opp();
   tv.resize(static_cast<std::size_t>(4 * nfin));
   tn.resize(static_cast<std::size_t>(4 * nfin));
   par::mark(ctx, "output: finite tets, input ids");

@@ -16,8 +16,14 @@ const char* to_string(Backend b) {
 }
 
 std::size_t estimated_device_bytes(std::int64_t n, Algorithm algorithm, bool weighted) {
-  const double per_point = weighted || algorithm == Algorithm::gstar4d ? 5400.0 : 900.0;
-  return (std::size_t(64) << 20) + static_cast<std::size_t>(per_point * static_cast<double>(std::max<std::int64_t>(n, 0)));
+  const double np = static_cast<double>(std::max<std::int64_t>(n, 0));
+  if (weighted || algorithm == Algorithm::gstar4d) return (std::size_t(64) << 20) + static_cast<std::size_t>(5400.0 * np);
+  // gflip3d / gdel3d: 640 bytes per point (mesh at 7.25 tet slots per point, points and
+  // their work arrays, the output) plus the largest flip iteration's temporaries, about
+  // 140 bytes per flip for up to 1.2n flips, at most 2^24 of them per iteration
+  // (FlipConfig::max_flips_per_iteration).
+  const double flips = std::min(1.2 * np, 16777216.0);
+  return (std::size_t(64) << 20) + static_cast<std::size_t>(640.0 * np + 140.0 * flips);
 }
 
 const char* to_string(Initial i) {

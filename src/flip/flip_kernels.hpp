@@ -126,7 +126,7 @@ GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, 
   const Tet bt = m.tet[b];
   const vid_t* bv = bt.v;
   vid_t apex[4];
-  for (int i = 0; i < 4; ++i) apex[i] = apex_of(m, m.opp[4 * std::int64_t(b) + i]);
+  for (int i = 0; i < 4; ++i) apex[i] = apex_of(m, m.opp(4 * std::int64_t(b) + i));
   for (int i = 0; i < 4; ++i) {
     if (apex[i] == kNoVertex || (m.face_flags(b, i) & mesh::kInternal)) continue;
     int s = g.insphere<Exact>(bv, apex[i], work);
@@ -213,7 +213,7 @@ GDEL_HD std::int64_t edge_removal_ear(const Geo& g, const MeshView& m, tid_t b, 
     li[n - 1] = iu;
     L[n++] = w;
     if (w == x) break;
-    const fid_t o = m.opp[4 * std::int64_t(cur) + iu];
+    const fid_t o = m.opp(4 * std::int64_t(cur) + iu);
     if (o < 0) return -1;
     cur = facet_tet(o);
   }
@@ -271,9 +271,9 @@ GDEL_HD std::int64_t propose_nonoptimal(const Geo& g, const MeshView& m, tid_t b
 // Tets touched by a proposal (2 or 3); returns the count.
 GDEL_HD inline int prop_tets(const MeshView& m, tid_t b, int prop, tid_t out[3]) {
   out[0] = b;
-  out[1] = facet_tet(m.opp[4 * std::int64_t(b) + prop_face(prop)]);
+  out[1] = m.opp_tet(4 * std::int64_t(b) + prop_face(prop));
   if (prop_type(prop) == 2) {
-    out[2] = facet_tet(m.opp[4 * std::int64_t(b) + prop_other(prop)]);
+    out[2] = m.opp_tet(4 * std::int64_t(b) + prop_other(prop));
     return 3;
   }
   return 2;
@@ -297,7 +297,7 @@ GDEL_HD inline void flip_outputs(const MeshView& m, tid_t b, int prop, FlipRec& 
   const Tet bt = m.tet[b];
   const vid_t* bv = bt.v;
   const int i = prop_face(prop);
-  const vid_t x = apex_of(m, m.opp[4 * std::int64_t(b) + i]);
+  const vid_t x = apex_of(m, m.opp(4 * std::int64_t(b) + i));
   r.type = prop_type(prop);
   if (r.type == 1) {
     for (int k = 0; k < 3; ++k) r.v[k] = bv[face_vertex(i, k)];

@@ -52,6 +52,15 @@ struct FlipConfig {
   // most this many records per point (48 bytes each): past it, the points are relocated
   // through the flips so far and the log starts again (same result; an extra walk).
   double log_records_per_point = 0.5;
+  // ... or exactly this many records when > 0 (test knob GDEL_FLIP_LOG_RECORDS, read by
+  // run(): a few records exercise the flushes).
+  std::int64_t log_records = 0;
+  // At most this many flips are executed per flip iteration: the accepted flips past it
+  // (in proposer order) stand down as if outvoted and propose again in the next
+  // iteration. Bounds an iteration's temporaries (≈ 130 bytes per flip: external-face
+  // entries, records, next active set), which at 10^8 points would otherwise reach
+  // 17 GB in the largest iterations. GDEL_FLIPS_PER_ITERATION sets it (read by run()).
+  std::int64_t max_flips_per_iteration = std::int64_t(1) << 24;
 };
 
 // The fast/exact split of the parallel layer with the predicates' scratch size.
@@ -80,6 +89,9 @@ class GFlip3D {
 
   void run() {
     debug_ = std::getenv("GDEL_CHECK_MESH") != nullptr;
+    if (const char* e = std::getenv("GDEL_FLIP_LOG_RECORDS")) cfg_.log_records = std::max<long long>(1, std::atoll(e));
+    if (const char* e = std::getenv("GDEL_FLIPS_PER_ITERATION"))
+      cfg_.max_flips_per_iteration = std::max<long long>(1, std::atoll(e));
     trace_ = std::getenv("GDEL_FLIP_TRACE") != nullptr;
     tie_mode_ = tie_mode_from_env();
     auto t0 = std::chrono::steady_clock::now();
@@ -176,7 +188,7 @@ class GFlip3D {
     inv_scale_ = inverse_scale();
     mesh_.reserve(std::max<std::int64_t>(initial_slots(), 2 * nt + 64));  // fresh slots are dead
     par::detail::Memory<B>::copy(ctx_, mesh_.tets().data(), tets.data(), static_cast<std::size_t>(nt) * sizeof(mesh::Tet));
-    par::detail::Memory<B>::copy(ctx_, mesh_.opp().data(), opp.data(), static_cast<std::size_t>(4 * nt) * sizeof(fid_t));
+    mesh_.set_opp_from(opp.data(), 4 * nt);
     par::fill(ctx_, mesh_.state().data(), static_cast<std::size_t>(nt), std::uint8_t(mesh::kAlive));
     mesh_.face_flags().memset(0);
     mesh_.set_size(nt);
@@ -348,7 +360,11 @@ class GFlip3D {
           }
     mesh_.reserve(initial_slots());  // fresh slots are dead
     par::detail::Memory<B>::from_host(ctx_, mesh_.tets().data(), tets.data(), 5 * sizeof(mesh::Tet));
-    par::detail::Memory<B>::from_host(ctx_, mesh_.opp().data(), opp.data(), 20 * sizeof(fid_t));
+    {
+      Buffer<fid_t, B> ob(ctx_);
+      ob.assign(opp);
+      mesh_.set_opp_from(ob.data(), 20);
+    }
     par::fill(ctx_, mesh_.state().data(), 5, std::uint8_t(mesh::kAlive));
     mesh_.face_flags().memset(0);
     mesh_.set_size(5);
@@ -572,7 +588,7 @@ class GFlip3D {
     Buffer<fid_t, B> oldopp(ctx_, static_cast<std::size_t>(4 * k));
     fid_t* oo = oldopp.data();
     par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) {
-      for (int i = 0; i < 4; ++i) oo[4 * s + i] = m.opp[4 * std::int64_t(ch[4 * s]) + i];
+      for (int i = 0; i < 4; ++i) oo[4 * s + i] = m.opp(4 * std::int64_t(ch[4 * s]) + i);
     });
     par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) {
       const vid_t* o = op[s].v;
@@ -582,7 +598,7 @@ class GFlip3D {
         m.state[c] = mesh::kAlive | mesh::kChanged;
         for (int kk = 0; kk < 3; ++kk) {
           const int j = face_vertex(i, kk);
-          m.opp[4 * std::int64_t(c) + kk] = pack_facet(ch[4 * s + j], split_shared_face(j, i));
+          m.set_opp(4 * std::int64_t(c) + kk, pack_facet(ch[4 * s + j], split_shared_face(j, i)));
           m.set_face_flags(c, kk, mesh::kInternal);
         }
         const fid_t ext = oo[4 * s + i];
@@ -591,10 +607,10 @@ class GFlip3D {
         const int nf = facet_face(ext);
         const std::int32_t ns = split_of[nt];
         if (ns >= 0) {
-          m.opp[4 * std::int64_t(c) + 3] = pack_facet(ch[4 * std::int64_t(ns) + nf], 3);
+          m.set_opp(4 * std::int64_t(c) + 3, pack_facet(ch[4 * std::int64_t(ns) + nf], 3));
         } else {
-          m.opp[4 * std::int64_t(c) + 3] = ext;
-          m.opp[4 * std::int64_t(nt) + nf] = pack_facet(c, 3);
+          m.set_opp(4 * std::int64_t(c) + 3, ext);
+          m.set_opp(4 * std::int64_t(nt) + nf, pack_facet(c, 3));
           m.set_face_flags(nt, nf, 0);
         }
       }
@@ -645,11 +661,10 @@ class GFlip3D {
     }
     log_.clear();
     log_iters_.assign(1, 0);
-    // (test knob GDEL_FLIP_LOG_RECORDS: this many records at most, to exercise the flushes)
-    const char* cap_env = std::getenv("GDEL_FLIP_LOG_RECORDS");
     const std::int64_t log_cap =
-        cap_env ? std::max<std::int64_t>(1, std::atoll(cap_env))
-                : std::max<std::int64_t>(std::int64_t(1) << 16, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
+        cfg_.log_records > 0
+            ? cfg_.log_records
+            : std::max<std::int64_t>(std::int64_t(1) << 16, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
     for (std::int64_t it = 0; it < cfg_.max_flip_iterations; ++it) {
       const std::int64_t na = static_cast<std::int64_t>(active_.size());
       if (na == 0) break;
@@ -725,6 +740,11 @@ class GFlip3D {
     // initializer contains an extended lambda once it is used in a constant context)
     std::int64_t nfl = static_cast<std::int64_t>(
         par::select_indices(ctx_, static_cast<std::size_t>(np), flp, [=] GDEL_HD(std::int64_t j) { return ap[j] != 0; }));
+    if (nfl > cfg_.max_flips_per_iteration) {  // the rest stand down (FlipConfig::max_flips_per_iteration)
+      const std::int64_t keep = cfg_.max_flips_per_iteration;
+      par::parallel_for(ctx_, nfl - keep, [=] GDEL_HD(std::int64_t f) { ap[flp[keep + f]] = 0; });
+      nfl = keep;
+    }
     // flips' proposer positions in A
     par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { flp[f] = plp[flp[f]]; });
     par::mark(ctx_, "flip: vote + select accepted");
@@ -816,7 +836,7 @@ class GFlip3D {
       for (int o = 0; o < no; ++o)
         for (int l = 0; l < 4; ++l) {
           ov[o][l] = m.tet[r.in[o]].v[l];
-          oopp[o][l] = m.opp[4 * std::int64_t(r.in[o]) + l];
+          oopp[o][l] = m.opp(4 * std::int64_t(r.in[o]) + l);
         }
       for (int o = 0; o < no; ++o) mark[r.in[o]] = stamp | static_cast<std::uint64_t>(f);
       int ne = 0;
@@ -834,7 +854,7 @@ class GFlip3D {
           for (int a2 = 0; a2 < nn && other < 0; ++a2)
             if (a2 != a && has_face(nv[a2], fvx)) other = a2;
           if (other >= 0) {
-            m.opp[4 * std::int64_t(sa) + l] = pack_facet(r.out[other], opposite_of_face(nv[other], fvx));
+            m.set_opp(4 * std::int64_t(sa) + l, pack_facet(r.out[other], opposite_of_face(nv[other], fvx)));
             m.set_face_flags(sa, l, mesh::kInternal);
             continue;
           }
@@ -867,13 +887,17 @@ class GFlip3D {
           while (k < 5 && pack_facet(rec[g].in[ef[6 * g + k] >> 2], ef[6 * g + k] & 3) != nb) ++k;
           nb = en[6 * g + k];
         } else {
-          m.opp[4 * std::int64_t(u) + j] = nf;
+          m.set_opp(4 * std::int64_t(u) + j, nf);
           m.set_face_flags(u, j, 0);
         }
       }
-      m.opp[4 * std::int64_t(facet_tet(nf)) + facet_face(nf)] = nb;
+      m.set_opp(4 * std::int64_t(facet_tet(nf)) + facet_face(nf), nb);
     });
     par::mark(ctx_, "flip: adjacency");
+    ext_new.release();  // not needed past here: room for the next active set's sort
+    ext_from.release();
+    ext_old.release();
+    und2.release();
     // 3-2 flips free their third slot, in flip order (deterministic free stack)
     if (nfl > n23) {
       Buffer<tid_t, B> freed(ctx_, static_cast<std::size_t>(nfl - n23));
@@ -970,7 +994,7 @@ class GFlip3D {
     tid_t* s = sides.data();
     par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t j) {
       s[2 * j] = static_cast<tid_t>(fp[j] >> 2);
-      s[2 * j + 1] = facet_tet(m.opp[fp[j]]);
+      s[2 * j + 1] = m.opp_tet(fp[j]);
     });
     set_of(sides);
     return k;

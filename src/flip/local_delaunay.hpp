@@ -17,7 +17,7 @@ namespace gdel::flip {
 template <class B>
 std::int64_t facet_signs(par::Context<B>& ctx, mesh::MeshView mv, std::int64_t nt, Geo g, std::int8_t* sg) {
   auto tuple = [=] GDEL_HD(std::int64_t f, vid_t* v) -> bool {
-    const fid_t o = mv.opp[f];
+    const fid_t o = mv.opp(f);
     const tid_t t = static_cast<tid_t>(f >> 2);
     if (o < 0 || facet_tet(o) < t || !mv.alive(t)) return false;
     for (int i = 0; i < 4; ++i) v[i] = mv.tet[t].v[i];

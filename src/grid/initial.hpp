@@ -97,7 +97,7 @@ GDEL_HD tid_t locate_walk(const flip::Geo& g, const mesh::MeshView& m, tid_t t, 
       if (s < 0) exit = i;
     }
     if (exit < 0) return t;
-    const fid_t o = m.opp[4 * std::int64_t(t) + exit];
+    const fid_t o = m.opp(4 * std::int64_t(t) + exit);
     t = facet_tet(o);
     entry = facet_face(o);
   }
@@ -306,7 +306,11 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   par::fill(ctx, state.data(), static_cast<std::size_t>(ntot), std::uint8_t(mesh::kAlive));
   Buffer<std::uint8_t, B> fflag(ctx, static_cast<std::size_t>(4 * ntot));
   fflag.memset(0);
-  const mesh::MeshView mv{T, O, state.data(), fflag.data()};
+  // the mesh's split adjacency (neighbour tet, its face) for the walks
+  Buffer<tid_t, B> opp_t(ctx, static_cast<std::size_t>(4 * ntot));
+  Buffer<std::uint8_t, B> opp_f(ctx, static_cast<std::size_t>(4 * ntot));
+  const mesh::MeshView mv{T, opp_t.data(), opp_f.data(), state.data(), fflag.data()};
+  par::parallel_for(ctx, 4 * ntot, [=] GDEL_HD(std::int64_t f) { mv.set_opp(f, O[f]); });
   const flip::Geo g = alg.geo();
   auto locate = [=] GDEL_HD(std::int64_t q, double* work, bool exact) -> bool {
     const vid_t s = site[voxel_of(q)];

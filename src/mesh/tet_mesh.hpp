@@ -2,8 +2,10 @@
 // repair stages. See mesh/conventions.hpp for the combinatorial conventions.
 //
 //   tet[t]    4 vertex ids (internal ids; kInfinite for the point at infinity)
-//   opp[4t+i] packed facet (t' << 2 | i') of the neighbour across face i, or -1;
-//             64-bit so tet-face counts may pass 2^31
+//   opp[4t+i] the neighbour across face i as a packed facet (t' << 2 | i'), or -1;
+//             stored as two arrays, the tet t' (4 bytes, kNoTet for none) and its face
+//             i' (1 byte): 5 bytes instead of a 64-bit packed facet, which tet-face
+//             counts past 2^31 would need (MeshView::opp / set_opp pack and unpack)
 //   state[t]  TetState bits (alive, changed, ...)
 //   fflag[4t+i] per-face FaceFlag bits (one byte per face, so that threads owning
 //             different faces of a tet never share a word)
@@ -44,16 +46,27 @@ enum FaceFlag : std::uint8_t {
 // Plain pointers for use inside kernels (trivially copyable).
 struct MeshView {
   Tet* tet;
-  fid_t* opp;
+  tid_t* opp_t;          // neighbour tet across face k = 4t+i (kNoTet: none)
+  std::uint8_t* opp_f;   // its face
   std::uint8_t* state;
   std::uint8_t* fflag;
+
+  GDEL_HD fid_t opp(std::int64_t k) const {
+    const tid_t u = opp_t[k];
+    return u < 0 ? fid_t(-1) : pack_facet(u, opp_f[k]);
+  }
+  GDEL_HD tid_t opp_tet(std::int64_t k) const { return opp_t[k]; }
+  GDEL_HD void set_opp(std::int64_t k, fid_t f) const {
+    opp_t[k] = f < 0 ? kNoTet : facet_tet(f);
+    opp_f[k] = static_cast<std::uint8_t>(f < 0 ? 0 : facet_face(f));
+  }
 
   GDEL_HD bool alive(tid_t t) const { return (state[t] & kAlive) != 0; }
   GDEL_HD std::uint8_t face_flags(tid_t t, int i) const { return fflag[4 * std::int64_t(t) + i]; }
   GDEL_HD void set_face_flags(tid_t t, int i, std::uint8_t f) const { fflag[4 * std::int64_t(t) + i] = f; }
   GDEL_HD void link(tid_t t, int i, tid_t u, int j) const {
-    opp[4 * std::int64_t(t) + i] = pack_facet(u, j);
-    opp[4 * std::int64_t(u) + j] = pack_facet(t, i);
+    set_opp(4 * std::int64_t(t) + i, pack_facet(u, j));
+    set_opp(4 * std::int64_t(u) + j, pack_facet(t, i));
   }
 };
 
@@ -73,7 +86,7 @@ template <class B>
 class TetMesh {
  public:
   explicit TetMesh(par::Context<B>& ctx)
-      : ctx_(&ctx), tet_(ctx), opp_(ctx), state_(ctx), fflag_(ctx), free_(ctx) {}
+      : ctx_(&ctx), tet_(ctx), opp_t_(ctx), opp_f_(ctx), state_(ctx), fflag_(ctx), free_(ctx) {}
 
   par::Context<B>& context() { return *ctx_; }
   std::int64_t capacity() const { return static_cast<std::int64_t>(tet_.size()); }
@@ -92,7 +105,7 @@ class TetMesh {
   // Capacity for at least n slots; contents kept; new slots are free and dead. Growth
   // is by a quarter at least (amortised), not by half: the mesh is most of a run's
   // memory, and each array is moved alone, so a growth step needs its largest array
-  // (opp) once more, 1.25 times over.
+  // (the neighbour tets) once more, 1.25 times over.
   void reserve(std::int64_t n) {
     std::int64_t old = capacity();
     if (n <= old) return;
@@ -102,7 +115,8 @@ class TetMesh {
       buf.resize(static_cast<std::size_t>(per * cap));
     };
     grow(tet_, 1);
-    grow(opp_, 4);
+    grow(opp_t_, 4);
+    grow(opp_f_, 4);
     grow(state_, 1);
     grow(fflag_, 4);
     std::uint8_t* st = state_.data();
@@ -142,7 +156,8 @@ class TetMesh {
     const std::int64_t n = o.size_;
     reserve(n);
     M::copy(*ctx_, tet_.data(), o.tet_.data(), static_cast<std::size_t>(n) * sizeof(Tet));
-    M::copy(*ctx_, opp_.data(), o.opp_.data(), static_cast<std::size_t>(4 * n) * sizeof(fid_t));
+    M::copy(*ctx_, opp_t_.data(), o.opp_t_.data(), static_cast<std::size_t>(4 * n) * sizeof(tid_t));
+    M::copy(*ctx_, opp_f_.data(), o.opp_f_.data(), static_cast<std::size_t>(4 * n));
     M::copy(*ctx_, state_.data(), o.state_.data(), static_cast<std::size_t>(n));
     M::copy(*ctx_, fflag_.data(), o.fflag_.data(), static_cast<std::size_t>(4 * n));
     if (free_.size() < static_cast<std::size_t>(o.free_count_)) free_.resize(static_cast<std::size_t>(o.free_count_));
@@ -156,7 +171,7 @@ class TetMesh {
   }
 
   MeshView view() {
-    return MeshView{tet_.data(), opp_.data(), state_.data(), fflag_.data()};
+    return MeshView{tet_.data(), opp_t_.data(), opp_f_.data(), state_.data(), fflag_.data()};
   }
 
   // Moves alive tets to [0, alive) keeping their order, remaps neighbour references;
@@ -205,15 +220,15 @@ class TetMesh {
 
   // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
   // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
-  // a time, so that the step needs the largest array (opp) twice, not the whole mesh.
+  // a time, so that the step needs the largest array (tets) twice, not the whole mesh.
   // shrink: capacity = alive.
   void apply_remap(const tid_t* rm, std::int64_t alive, bool shrink = false) {
     const std::int64_t n = size();
     const std::int64_t cap = std::max<std::int64_t>(shrink ? alive : capacity(), 1);
     const std::uint8_t* st = state_.data();
     remap_records(tet_, 1, cap, rm, [] GDEL_HD(const Tet& x) { return x; });
-    remap_records(opp_, 4, cap, rm,
-                  [=] GDEL_HD(fid_t o) { return o < 0 ? o : pack_facet(rm[facet_tet(o)], facet_face(o)); });
+    remap_records(opp_t_, 4, cap, rm, [=] GDEL_HD(tid_t u) { return u < 0 ? u : rm[u]; });
+    remap_records(opp_f_, 4, cap, rm, [] GDEL_HD(std::uint8_t x) { return x; });
     remap_records(fflag_, 4, cap, rm, [] GDEL_HD(std::uint8_t x) { return x; });
     par::Buffer<std::uint8_t, B> s2(*ctx_, static_cast<std::size_t>(cap));
     std::uint8_t* sp = s2.data();
@@ -243,7 +258,23 @@ class TetMesh {
   }
 
   par::Buffer<Tet, B>& tets() { return tet_; }
-  par::Buffer<fid_t, B>& opp() { return opp_; }
+  // Adjacency: packed facets (4 per slot, -1: none) to / from the split arrays.
+  std::vector<fid_t> opp_to_host() const {
+    const std::vector<tid_t> t = opp_t_.to_host();
+    const std::vector<std::uint8_t> f = opp_f_.to_host();
+    std::vector<fid_t> o(t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) o[k] = t[k] < 0 ? fid_t(-1) : pack_facet(t[k], f[k]);
+    return o;
+  }
+  // Slots [0, count / 4) from count packed facets in backend memory.
+  void set_opp_from(const fid_t* src, std::int64_t count) {
+    const MeshView v = view();
+    par::parallel_for(*ctx_, count, [=] GDEL_HD(std::int64_t k) { v.set_opp(k, src[k]); });
+  }
+  void release_opp() {
+    opp_t_.release();
+    opp_f_.release();
+  }
   par::Buffer<std::uint8_t, B>& state() { return state_; }
   par::Buffer<std::uint8_t, B>& face_flags() { return fflag_; }
   // Sets the high-water mark (slots [0, size) in use) and empties the free stack
@@ -257,7 +288,8 @@ class TetMesh {
  private:
   par::Context<B>* ctx_;
   par::Buffer<Tet, B> tet_;
-  par::Buffer<fid_t, B> opp_;
+  par::Buffer<tid_t, B> opp_t_;
+  par::Buffer<std::uint8_t, B> opp_f_;
   par::Buffer<std::uint8_t, B> state_;
   par::Buffer<std::uint8_t, B> fflag_;
   par::Buffer<tid_t, B> free_;  // the free stack: as long as it has ever been deep, not the capacity
@@ -280,7 +312,7 @@ MeshProblems check_invariants(TetMesh<B>& m, std::int64_t num_points, std::size_
   MeshProblems p;
   std::int64_t n = m.size();
   auto tet = m.tets().to_host();
-  auto opp = m.opp().to_host();
+  auto opp = m.opp_to_host();
   auto st = m.state().to_host();
   auto add = [&](const std::string& s) {
     if (p.items.size() < max_report) p.items.push_back(s);

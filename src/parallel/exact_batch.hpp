@@ -73,10 +73,13 @@ std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undec
                              std::size_t work_doubles) {
   if (n <= 0) return 0;
   parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
-  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(n));
+  // counted first: the list is as long as the undecided items (few), not n
+  auto und = [=] GDEL_HD(std::int64_t i) { return undecided[i] != 0; };
+  const std::int64_t m = count_indices(ctx, static_cast<std::size_t>(n), und);
+  if (m == 0) return 0;
+  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(m));
   std::int64_t* lp = list.data();
-  std::int64_t m = static_cast<std::int64_t>(select_indices(
-      ctx, static_cast<std::size_t>(n), lp, [=] GDEL_HD(std::int64_t i) { return undecided[i] != 0; }));
+  select_indices(ctx, static_cast<std::size_t>(n), lp, und);
   for_each_with_scratch(ctx, m, work_doubles, [=] GDEL_HD(std::int64_t k, double* work) { exact(lp[k], work); });
   return m;
 }

@@ -78,25 +78,32 @@ class GDel3D {
                       [=] GDEL_HD(I64 i) { want[vp[i]] = static_cast<std::int32_t>(i); });
     const mesh::MeshView mv = mesh_.view();
     const I64 nt = mesh_.size();
-    Buffer<I64, B> cnt(ctx_, static_cast<std::size_t>(nt + 1));
-    I64* cp = cnt.data();
     const vid_t inf = g_.inf;
-    par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) {
-      I64 c = 0;
+    auto hits = [=] GDEL_HD(I64 t) -> int {
+      int c = 0;
       for (int i = 0; i < 4; ++i) {
         const vid_t v = mv.tet[t].v[i];
         c += (v != inf && want[v] >= 0) ? 1 : 0;
       }
-      cp[t] = c;
-    });
-    const I64 total = par::counts_to_offsets(ctx_, cp, static_cast<std::size_t>(nt));
+      return c;
+    };
+    // the tets with a wanted vertex first (few: memory by them, not by the mesh)
+    const I64 nl = par::count_indices(ctx_, static_cast<std::size_t>(nt), [=] GDEL_HD(I64 t) { return hits(t) > 0; });
+    Buffer<tid_t, B> list(ctx_, static_cast<std::size_t>(std::max<I64>(nl, 1)));
+    tid_t* lp = list.data();
+    par::select_indices(ctx_, static_cast<std::size_t>(nt), lp, [=] GDEL_HD(tid_t t) { return hits(t) > 0; });
+    Buffer<I64, B> cnt(ctx_, static_cast<std::size_t>(nl + 1));
+    I64* cp = cnt.data();
+    par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 j) { cp[j] = hits(lp[j]); });
+    const I64 total = par::counts_to_offsets(ctx_, cp, static_cast<std::size_t>(nl));
     Buffer<U64, B> keys(ctx_, static_cast<std::size_t>(total));
     U64* kp = keys.data();
-    par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) {
-      I64 k = cp[t];
+    par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 j) {
+      I64 k = cp[j];
+      const tid_t t = lp[j];
       for (int i = 0; i < 4; ++i) {
         const vid_t v = mv.tet[t].v[i];
-        if (v != inf && want[v] >= 0) kp[k++] = pair_key(v, static_cast<vid_t>(t));
+        if (v != inf && want[v] >= 0) kp[k++] = pair_key(v, t);
       }
     });
     if (total > 0) par::sort_keys(ctx_, kp, static_cast<std::size_t>(total));
@@ -149,7 +156,7 @@ class GDel3D {
       for (int e = 0; e < 3; ++e) {
         // edge e of the link triangle is opposite tr.v[e]: the tet face opposite it
         const int lf = tet_slot(mv, t, tr.v[e]);
-        const tid_t u = facet_tet(mv.opp[4 * I64(t) + lf]);
+        const tid_t u = mv.opp_tet(4 * I64(t) + lf);
         const I64 lo = sorted_find(inc, m, pair_key(me, u));  // local index of u
         if (lo < 0) {
           ok = false;
@@ -188,7 +195,7 @@ class GDel3D {
         for (int e = 0; e < 3; ++e) {
           if (!(T[i].v[(e + 1) % 3] < T[i].v[(e + 2) % 3])) continue;  // each edge from one side
           const I64 f = 4 * I64(t) + tet_slot(mv, t, T[i].v[e]);
-          const fid_t o = mv.opp[f];
+          const fid_t o = mv.opp(f);
           const std::int8_t sign = (o >= 0 && facet_tet(o) < t) ? sg[o] : sg[f];
           if (sign > 0) mask |= std::uint8_t(kTriStacked0 << e);
         }
@@ -350,7 +357,8 @@ class GDel3D {
     res_.splay = sp_.stats();
   }
 
-  // Step 4: final tets (internal ids) and neighbours (-1 on the hull).
+  // Step 4: final tets (internal ids) and neighbours (-1 on the hull). Consumes the
+  // mesh: its arrays are released as the output is written.
   void extract(Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr) {
     const mesh::MeshView mv = mesh_.view();
     const I64 nt = mesh_.size();
@@ -380,7 +388,12 @@ class GDel3D {
           return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
         },
         geom::kPredicateWork);
-    // flp[t] > 0: kept. Star tets: from the stars, each once.
+    // flp[t] > 0: kept; kInfTet: a tet with the vertex at infinity (read below, after
+    // the tets array is gone). Star tets: from the stars, each once.
+    constexpr std::int8_t kInfTet = -100;
+    par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) {
+      if (tet_slot(mv, static_cast<tid_t>(t), inf) >= 0) flp[t] = kInfTet;
+    });
     Buffer<I64, B> snum(ctx_);
     I64 flat_stars = 0;
     const I64 nstar = sp_.plan_star_tets(snum, flat_stars, res_.exact_evaluations);
@@ -394,22 +407,34 @@ class GDel3D {
     res_.flat_removed = par::count_indices(ctx_, static_cast<std::size_t>(nt),
                                            [=] GDEL_HD(I64 t) { return t_candidate(t) && flp[t] == 0; }) +
                         flat_stars;
+    // The mesh is consumed from here on, one array at a time, so that the output is
+    // never beside the whole mesh (at 10^8 points: 94 -> 73 bytes per tet at the peak).
+    mesh_.state().release();
+    mesh_.face_flags().release();
     tets.resize(static_cast<std::size_t>(4 * nout));
-    nbr.resize(static_cast<std::size_t>(4 * nout));
     vid_t* op = tets.data();
+    par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) {
+      if (tnp[t + 1] == tnp[t]) return;
+      const I64 d = tnp[t];
+      for (int i = 0; i < 4; ++i) op[4 * d + i] = mv.tet[t].v[i];
+    });
+    mesh_.tets().release();
+    nbr.resize(static_cast<std::size_t>(4 * nout));
     std::int32_t* np = nbr.data();
     par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) {
       if (tnp[t + 1] == tnp[t]) return;
       const I64 d = tnp[t];
       for (int i = 0; i < 4; ++i) {
-        op[4 * d + i] = mv.tet[t].v[i];
-        const fid_t o = mv.opp[4 * t + i];
+        const fid_t o = mv.opp(4 * t + i);
         const tid_t u = facet_tet(o);
         // -2: to be matched by face key; -1: hull (∞ on the other side)
-        const bool u_inf = o < 0 || tet_slot(mv, u, inf) >= 0;
+        const bool u_inf = o < 0 || flp[u] == kInfTet;
         np[4 * d + i] = u_inf ? -1 : (tnp[u + 1] != tnp[u] ? static_cast<std::int32_t>(tnp[u]) : -2);
       }
     });
+    mesh_.release_opp();
+    tnum.release();
+    flat.release();
     sp_.write_star_tets(snum, op, np, nkeep);
     sp_.match_faces(tets, nbr, nout);
   }

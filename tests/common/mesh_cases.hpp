@@ -28,8 +28,8 @@ void tet_mesh_cases(par::Context<B>& ctx) {
     v.tet[a] = Tet{{0, 1, 2, 3}};
     v.tet[b] = Tet{{1, 0, 2, 4}};
     for (int i = 0; i < 4; ++i) {
-      v.opp[4 * a + i] = -1;
-      v.opp[4 * b + i] = -1;
+      v.set_opp(4 * a + i, -1);
+      v.set_opp(4 * b + i, -1);
     }
     v.state[a] = v.state[b] = kAlive;
     for (int i = 0; i < 4; ++i) v.set_face_flags(a, i, 0), v.set_face_flags(b, i, 0);
@@ -44,13 +44,13 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   EXPECT_EQ(ff[4 * lo + 2], kSpecial | kSphereFail);
 
   // Break symmetry: detected.
-  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { v.opp[4 * 0 + 3] = pack_facet(1, 2); });
+  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { v.set_opp(4 * 0 + 3, pack_facet(1, 2)); });
   EXPECT_FALSE(check_invariants(m, 5).ok());
   par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { v.link(0, 3, 1, 3); });
   EXPECT_TRUE(check_invariants(m, 5).ok());
 
   // Release the first, claim three (one reused + two new), then compact.
-  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { v.opp[4 * 1 + 3] = -1; });
+  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { v.set_opp(4 * 1 + 3, -1); });
   par::Buffer<tid_t, B> rel(ctx, 1);
   rel.memset(0);  // slot 0
   m.release(rel.data(), 1);
@@ -65,7 +65,10 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) {
     v.tet[0] = Tet{{5, 6, 7, 8}};
     v.tet[3] = Tet{{9, 10, 11, kInfinite}};
-    for (int i = 0; i < 4; ++i) v.opp[i] = v.opp[12 + i] = -1;
+    for (int i = 0; i < 4; ++i) {
+      v.set_opp(i, -1);
+      v.set_opp(12 + i, -1);
+    }
     v.state[0] = v.state[3] = kAlive;
     v.state[2] = 0;
     v.link(1, 3, 3, 3);  // arbitrary glue for remap test (not geometric)
@@ -79,7 +82,7 @@ void tet_mesh_cases(par::Context<B>& ctx) {
     EXPECT_EQ(tv[0].v[0], 9);  // keys 991 < 995 < 999
     EXPECT_EQ(tv[1].v[0], 5);
     EXPECT_EQ(tv[2].v[0], 1);
-    auto op = m.opp().to_host();
+    auto op = m.opp_to_host();
     EXPECT_EQ(op[4 * 0 + 3], pack_facet(2, 3));  // old 3 <-> old 1 glued through face 3
     EXPECT_EQ(op[4 * 2 + 3], pack_facet(0, 3));
     // and back to slot order for the compaction checks below
@@ -88,7 +91,7 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   auto remap = m.compact().to_host();
   EXPECT_EQ(m.size(), 3);
   EXPECT_EQ(remap[2], 2);  // already compact: identity
-  auto opp = m.opp().to_host();
+  auto opp = m.opp_to_host();
   EXPECT_EQ(opp[4 * 1 + 3], pack_facet(2, 3));
   EXPECT_EQ(opp[4 * 2 + 3], pack_facet(1, 3));
 }
