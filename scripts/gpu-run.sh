@@ -353,6 +353,21 @@ case "$plan" in
     bench s10_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     bench s10_e6 60 --dist uniform,sphere --n 1000000 --methods gdel3d-cuda-dev,auto-cuda --repeat 3
     ;;
+  s10final)  # the session's last binaries in one call (within GDEL_CALL_BUDGET): 10^8 verified with the step
+              # profile first, then the GPU tests of the changed code, then 10^7
+    GDEL_PROFILE=1 bench s10f_e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    step verify_grid 40 "$tbin/gpu_verify_grid"
+    step gflip3d 100 "$tbin/gpu_gflip3d"
+    step gdel3d 140 "$tbin/gpu_gdel3d"
+    step hostile_estimate 40 "$tbin/gpu_hostile" --gtest_filter='*MemoryEstimate*'
+    bench s10f_e7 40 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
+  s10apex)  # the apex across a face from the neighbour's vertices: gFlip3D tests (the resized flip-cap test),
+             # gDel3D at scale, 10^7 time (a short call: little device time was left)
+    step gflip3d 60 "$tbin/gpu_gflip3d" --gtest_filter='*FlipCap*:*AllGenerators:*LogFlushes*'
+    step gdel3d 40 "$tbin/gpu_gdel3d" --gtest_filter='*AllGeneratorsAtScale*:*Degenerate*'
+    bench s10a_e7 30 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

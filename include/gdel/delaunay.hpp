@@ -155,11 +155,14 @@ struct Triangulation {
 Triangulation delaunay(std::span<const double> points, const Options& options = {});
 
 // The device memory a CUDA run is expected to need for n points (bytes): a fixed 64 MiB
-// plus the peak per point measured on uniform input (bench/RESULTS.md): 900 bytes for
-// gflip3d / gdel3d (Auto), 5 400 for gstar4d, and the same 5 400 for gdel::regular
-// (gReg3D, `weighted`). Input whose repair splays many or large stars needs more (gdel3d
-// at 10^6: 2.0x on the grid, 2.8x on the exactly cospherical sphere; gstar4d 1.8x on the
-// thin shell). The CUDA backend compares this with the free device
+// plus what uniform input was measured to need (bench/RESULTS.md): for gflip3d / gdel3d
+// (Auto) 640 bytes per point plus 140 bytes for each flip of the largest flip iteration
+// (1.2n, at most 2^24: FlipConfig::max_flips_per_iteration), i.e. 808 bytes per point
+// up to 1.4*10^7 points and 663 at 10^8 (measured: 679, 683 and 578); 5 400 per point for
+// gstar4d, and the same for gdel::regular (gReg3D, `weighted`). Input whose repair splays
+// many or large stars needs more (gdel3d at 10^6: 2.0x on the grid, 2.8x on the exactly
+// cospherical sphere, measured against the former 900 bytes per point; gstar4d 1.8x on
+// the thin shell). The CUDA backend compares this with the free device
 // memory (and Options::device_memory_limit) before it starts: when it does not fit, the
 // call fails at once with OutOfDeviceMemory (needed = the estimate, free = what is free),
 // or runs on the CPU with Options::fallback_to_cpu, instead of failing later at an

@@ -77,6 +77,19 @@ GDEL_HD inline int prop_other(int p) { return p & 3; }
 GDEL_HD inline vid_t apex_of(const MeshView& m, fid_t o) {
   return o < 0 ? kNoVertex : m.tet[facet_tet(o)].v[facet_face(o)];
 }
+// The apex across face i of tet b (vertices bv): the neighbour's vertex off the shared
+// face, found among its 4 vertices (one 16-byte load) without the neighbour's face
+// index (a second, dependent-free but separate load in the hot loops).
+GDEL_HD inline vid_t apex_across(const MeshView& m, tid_t b, const vid_t* bv, int i) {
+  const tid_t u = m.opp_tet(4 * std::int64_t(b) + i);
+  if (u < 0) return kNoVertex;
+  const Tet ut = m.tet[u];
+  const vid_t a = bv[face_vertex(i, 0)], c = bv[face_vertex(i, 1)], d = bv[face_vertex(i, 2)];
+  vid_t x = ut.v[3];
+  for (int k = 0; k < 3; ++k)
+    if (ut.v[k] != a && ut.v[k] != c && ut.v[k] != d) x = ut.v[k];
+  return x;
+}
 
 // The edges of face i of tet bv that block its 2-3 flip with apex x across the face:
 // bit k stands for the edge from corner face_vertex(i, k) to face_vertex(i, k+1) when
@@ -126,7 +139,7 @@ GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, 
   const Tet bt = m.tet[b];
   const vid_t* bv = bt.v;
   vid_t apex[4];
-  for (int i = 0; i < 4; ++i) apex[i] = apex_of(m, m.opp(4 * std::int64_t(b) + i));
+  for (int i = 0; i < 4; ++i) apex[i] = apex_across(m, b, bv, i);
   for (int i = 0; i < 4; ++i) {
     if (apex[i] == kNoVertex || (m.face_flags(b, i) & mesh::kInternal)) continue;
     int s = g.insphere<Exact>(bv, apex[i], work);
@@ -297,7 +310,7 @@ GDEL_HD inline void flip_outputs(const MeshView& m, tid_t b, int prop, FlipRec& 
   const Tet bt = m.tet[b];
   const vid_t* bv = bt.v;
   const int i = prop_face(prop);
-  const vid_t x = apex_of(m, m.opp(4 * std::int64_t(b) + i));
+  const vid_t x = apex_across(m, b, bv, i);
   r.type = prop_type(prop);
   if (r.type == 1) {
     for (int k = 0; k < 3; ++k) r.v[k] = bv[face_vertex(i, k)];

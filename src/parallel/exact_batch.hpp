@@ -75,7 +75,7 @@ std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undec
   parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
   // counted first: the list is as long as the undecided items (few), not n
   auto und = [=] GDEL_HD(std::int64_t i) { return undecided[i] != 0; };
-  const std::int64_t m = count_indices(ctx, static_cast<std::size_t>(n), und);
+  std::int64_t m = count_indices(ctx, static_cast<std::size_t>(n), und);
   if (m == 0) return 0;
   Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(m));
   std::int64_t* lp = list.data();

@@ -88,7 +88,10 @@ class GDel3D {
       return c;
     };
     // the tets with a wanted vertex first (few: memory by them, not by the mesh)
-    const I64 nl = par::count_indices(ctx_, static_cast<std::size_t>(nt), [=] GDEL_HD(I64 t) { return hits(t) > 0; });
+    // (not const: nvcc 13.0 crashes, "i_copy_expr_tree", on a const local whose
+    // initializer holds an extended lambda)
+    auto has_wanted = [=] GDEL_HD(I64 t) { return hits(t) > 0; };
+    I64 nl = par::count_indices(ctx_, static_cast<std::size_t>(nt), has_wanted);
     Buffer<tid_t, B> list(ctx_, static_cast<std::size_t>(std::max<I64>(nl, 1)));
     tid_t* lp = list.data();
     par::select_indices(ctx_, static_cast<std::size_t>(nt), lp, [=] GDEL_HD(tid_t t) { return hits(t) > 0; });

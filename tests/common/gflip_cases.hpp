@@ -146,11 +146,11 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
 }
 
 // At most FlipConfig::max_flips_per_iteration flips run per iteration (memory bound at
-// 10^8 points); the accepted flips past it stand down and propose again. With a cap of
-// 64 (GDEL_FLIPS_PER_ITERATION) the cap binds in most iterations: gFlip3D's output must
+// 10^8 points); the accepted flips past it stand down and propose again. With a small cap
+// (GDEL_FLIPS_PER_ITERATION) the cap binds in most iterations: gFlip3D's output must
 // still be valid, it needs more iterations, and gDel3D's exact result is the same
 // triangulation.
-inline void gflip_flip_cap_cases(Backend b, std::size_t n) {
+inline void gflip_flip_cap_cases(Backend b, std::size_t n, const char* cap) {
   using gen::Distribution;
   for (auto d : {Distribution::Uniform, Distribution::ThinShell, Distribution::Grid}) {
     SCOPED_TRACE(std::string(gen::to_string(d)));
@@ -162,7 +162,7 @@ inline void gflip_flip_cap_cases(Backend b, std::size_t n) {
     o.algorithm = Algorithm::gdel3d;
     o.canonical_order = true;
     const Triangulation exact = delaunay(pts, o);
-    ::setenv("GDEL_FLIPS_PER_ITERATION", "64", 1);
+    ::setenv("GDEL_FLIPS_PER_ITERATION", cap, 1);
     o.algorithm = Algorithm::gflip3d;
     o.canonical_order = false;
     const Triangulation capped = delaunay(pts, o);

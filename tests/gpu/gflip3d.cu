@@ -6,4 +6,4 @@ TEST(GFlip3DGpu, NonoptimalFlipsAllGenerators) { gdel::test::nonoptimal_generato
 TEST(GFlip3DGpu, NonoptimalFlipsReduceStuckFacets) { gdel::test::nonoptimal_reduces_cases(gdel::Backend::Cuda); }
 TEST(GFlip3DGpu, AutoUsesNonoptimalFlipsWhenFewAreStuck) { gdel::test::nonoptimal_auto_cases(gdel::Backend::Cuda); }
 TEST(GFlip3DGpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cuda, 200000); }
-TEST(GFlip3DGpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cuda, 100000); }
+TEST(GFlip3DGpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cuda, 20000, "256"); }
