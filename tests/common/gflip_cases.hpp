@@ -125,14 +125,23 @@ inline void gflip_degenerate_cases(Backend b) {
 // points are relocated through the flips so far and the log restarts. That must not change
 // anything: the same flips and the same triangulation with a cap of a few records
 // (GDEL_FLIP_LOG_RECORDS), i.e. a relocation after almost every flip iteration.
-inline void gflip_log_flush_cases(Backend b, std::size_t n) {
+// Runs body(pts, o) on uniform, thin-shell and grid points (n, seed) with o set to
+// gFlip3D on backend b: the inputs of the flip-machinery studies below.
+template <class F>
+inline void for_flip_study_inputs(Backend b, std::size_t n, std::uint64_t seed, F body) {
   using gen::Distribution;
   for (auto d : {Distribution::Uniform, Distribution::ThinShell, Distribution::Grid}) {
     SCOPED_TRACE(std::string(gen::to_string(d)));
-    auto pts = gen::generate(d, n, 5);
+    const std::vector<double> pts = gen::generate(d, n, seed);
     Options o;
     o.backend = b;
     o.algorithm = Algorithm::gflip3d;
+    body(pts, o);
+  }
+}
+
+inline void gflip_log_flush_cases(Backend b, std::size_t n) {
+  for_flip_study_inputs(b, n, 5, [&](const std::vector<double>& pts, Options o) {
     const Triangulation base = delaunay(pts, o);
     ::setenv("GDEL_FLIP_LOG_RECORDS", "16", 1);
     const Triangulation small = delaunay(pts, o);
@@ -142,7 +151,7 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
     EXPECT_EQ(small.stats.flips32, base.stats.flips32);
     EXPECT_EQ(small.tets, base.tets);
     EXPECT_EQ(small.neighbors, base.neighbors);
-  }
+  });
 }
 
 // At most FlipConfig::max_flips_per_iteration flips run per iteration (memory bound at
@@ -151,13 +160,7 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
 // still be valid, it needs more iterations, and gDel3D's exact result is the same
 // triangulation.
 inline void gflip_flip_cap_cases(Backend b, std::size_t n, const char* cap) {
-  using gen::Distribution;
-  for (auto d : {Distribution::Uniform, Distribution::ThinShell, Distribution::Grid}) {
-    SCOPED_TRACE(std::string(gen::to_string(d)));
-    auto pts = gen::generate(d, n, 9);
-    Options o;
-    o.backend = b;
-    o.algorithm = Algorithm::gflip3d;
+  for_flip_study_inputs(b, n, 9, [&](const std::vector<double>& pts, Options o) {
     const Triangulation base = delaunay(pts, o);
     o.algorithm = Algorithm::gdel3d;
     o.canonical_order = true;
@@ -174,7 +177,7 @@ inline void gflip_flip_cap_cases(Backend b, std::size_t n, const char* cap) {
     EXPECT_GT(capped.stats.flip_iterations, base.stats.flip_iterations);
     EXPECT_EQ(capped_exact.tets, exact.tets);
     EXPECT_EQ(capped_exact.neighbors, exact.neighbors);
-  }
+  });
 }
 
 }  // namespace gdel::test
