@@ -94,7 +94,7 @@ class GDel3D {
     I64 nl = par::count_indices(ctx_, static_cast<std::size_t>(nt), has_wanted);
     Buffer<tid_t, B> list(ctx_, static_cast<std::size_t>(std::max<I64>(nl, 1)));
     tid_t* lp = list.data();
-    par::select_indices(ctx_, static_cast<std::size_t>(nt), lp, [=] GDEL_HD(tid_t t) { return hits(t) > 0; });
+    par::select_indices(ctx_, static_cast<std::size_t>(nt), lp, has_wanted);
     Buffer<I64, B> cnt(ctx_, static_cast<std::size_t>(nl + 1));
     I64* cp = cnt.data();
     par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 j) { cp[j] = hits(lp[j]); });

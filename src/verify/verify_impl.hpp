@@ -63,7 +63,14 @@ GDEL_HD inline int bit_width_of(std::int64_t v) {
 struct Chunk {
   vid_t lo, hi;          // bucket vertices [lo, hi)
   std::int64_t items;    // items in the chunk
+  // bits of chunk_pair_key's keys in this chunk
+  int key_bits(int vbits) const { return vbits + bit_width_of(hi - lo); }
 };
+// Sort key of the vertex pair (a, b), a in the chunk starting at vertex lo, b below
+// 2^vbits: (a - lo) above b, so that a chunk's sort needs only Chunk::key_bits bits.
+GDEL_HD inline std::uint64_t chunk_pair_key(vid_t a, vid_t b, vid_t lo, int vbits) {
+  return (std::uint64_t(std::uint32_t(a - lo)) << vbits) | std::uint32_t(b);
+}
 
 template <class B, class BucketOf>
 std::vector<Chunk> plan_chunks(Context<B>& ctx, std::int64_t n, std::int64_t items, std::int64_t cap,
@@ -219,9 +226,9 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       par::sort_pairs(ctx, kp, fp, static_cast<std::size_t>(F), vbits);
       par::parallel_for(ctx, F, [=] GDEL_HD(I64 k) {
         const FaceKey q = face_key(tet, fp[k]);
-        kp[k] = (U64(std::uint32_t(q.a - lo)) << vbits) | std::uint32_t(q.b);
+        kp[k] = chunk_pair_key(q.a, q.b, lo, vbits);
       });
-      par::sort_pairs(ctx, kp, fp, static_cast<std::size_t>(F), vbits + bit_width_of(hi - lo));  // stable: ties keep c order
+      par::sort_pairs(ctx, kp, fp, static_cast<std::size_t>(F), ch.key_bits(vbits));  // stable: ties keep c order
     }
     // per sorted position, at run starts: 1 hull, 2 interior, 3 same side, 4 overshared
     Buffer<std::int8_t, B> kind(ctx, static_cast<std::size_t>(F));
@@ -315,9 +322,9 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
         const I64 e = evp[k];
         const vid_t u = hull_vertex(e / 3, static_cast<int>(e % 3)), v = hull_vertex(e / 3, static_cast<int>((e + 1) % 3));
         const vid_t a = u < v ? u : v, b = u < v ? v : u;
-        ekp[k] = (U64(std::uint32_t(a - lo)) << vbits) | std::uint32_t(b);
+        ekp[k] = chunk_pair_key(a, b, lo, vbits);
       });
-      par::sort_pairs(ctx, ekp, evp, static_cast<std::size_t>(E), vbits + bit_width_of(hi - lo));
+      par::sort_pairs(ctx, ekp, evp, static_cast<std::size_t>(E), ch.key_bits(vbits));
       // Per run start: exactly 2 with opposite directions (2), else open (1).
       Buffer<std::int8_t, B> kind(ctx, static_cast<std::size_t>(E));
       std::int8_t* kd = kind.data();
@@ -406,10 +413,10 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
         par::parallel_for(ctx, E, [=] GDEL_HD(I64 j) {
           vid_t a, b;
           edge_of(ip[j], a, b);
-          ekp[j] = (U64(std::uint32_t(a - lo)) << vbits) | std::uint32_t(b);
+          ekp[j] = chunk_pair_key(a, b, lo, vbits);
         });
       }
-      par::sort_keys(ctx, ekp, static_cast<std::size_t>(E), vbits + bit_width_of(hi - lo));
+      par::sort_keys(ctx, ekp, static_cast<std::size_t>(E), ch.key_bits(vbits));
       r.edges += par::count_indices(ctx, static_cast<std::size_t>(E),
                                     [=] GDEL_HD(I64 k) { return k == 0 || ekp[k] != ekp[k - 1]; });
     }
