@@ -8,6 +8,7 @@
 //   methods: auto-cuda, auto-cpu (Algorithm::Auto), gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            (gflip3d-* and gdel3d-* with "-grid-" in the name, e.g. gdel3d-grid-cuda: Options::initial = grid;
 //             with "nonopt", e.g. gflip3d-nonopt-cpu: Options::nonoptimal_flips;
+//             with "-indsplit", e.g. gflip3d-indsplit-cuda: Options::independent_splits;
 //             with "-random" or "-centroid", e.g. gflip3d-random-cpu: Options::insertion)
 //            cgal, cgal-par   (default: all available)
 //   weighted points (regular triangulation): greg3d-cuda, greg3d-cpu, cgal-regular, cgal-regular-par,
@@ -151,6 +152,7 @@ int main(int argc, char** argv) {
           o.terminal_flipping = m.find("terminal") != std::string::npos;
           o.initial = m.find("-grid-") != std::string::npos ? gdel::Initial::grid : gdel::Initial::Default;
           o.nonoptimal_flips = m.find("nonopt") != std::string::npos;
+          o.independent_splits = m.find("-indsplit") != std::string::npos;
           o.insertion = m.find("-random") != std::string::npos     ? gdel::InsertionRule::Random
                         : m.find("-centroid") != std::string::npos ? gdel::InsertionRule::Centroid
                                                                    : gdel::InsertionRule::Circumcenter;

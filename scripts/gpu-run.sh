@@ -368,6 +368,30 @@ case "$plan" in
     step gdel3d 40 "$tbin/gpu_gdel3d" --gtest_filter='*AllGeneratorsAtScale*:*Degenerate*'
     bench s10a_e7 30 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
+  s11splits)  # 2026-11-25 session 11: independent splits + stuck tets kept active. gFlip3D's stuck facets
+               # (exact verifier) with and without, then the time of gdel3d / Auto both ways, then the tests
+    bench s11_q 120 --dist uniform,gaussian,thin_shell --n 1000000 \
+      --methods gflip3d-cuda,gflip3d-allsplit-cuda,gflip3d-nonopt-cuda --repeat 1
+    bench s11_t6 150 --dist uniform,thin_shell,grid,sphere --n 1000000 \
+      --methods gdel3d-cuda-dev,gdel3d-allsplit-cuda-dev,auto-cuda --repeat 3
+    bench s11_t7 80 --dist uniform --n 10000000 --methods gdel3d-cuda-dev,gdel3d-allsplit-cuda-dev --repeat 3
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    step gdel3d 150 "$tbin/gpu_gdel3d"
+    ;;
+  s11b)  # independent splits on for gflip3d only: the GPU tests, then the exact algorithms' time (back to
+          # the original rule) and gflip3d on the degenerate inputs
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    bench s11b_t6 120 --dist uniform,thin_shell,grid,sphere --n 1000000 --methods gdel3d-cuda-dev,auto-cuda,gflip3d-cuda \
+      --repeat 3
+    bench s11b_t7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev,gflip3d-cuda --repeat 3
+    ;;
+  s11c)  # the final binaries (independent splits an option, off by default): 10^8 with the option and the
+          # step profile (its smaller rounds hold less memory), verified; then the GPU tests
+    GDEL_PROFILE=1 bench s11c_e8 250 --dist uniform --n 100000000 --methods gdel3d-indsplit-cuda-dev --repeat 1
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    step gdel3d 160 "$tbin/gpu_gdel3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

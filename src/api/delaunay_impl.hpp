@@ -124,6 +124,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     cfg.nonoptimal_keep_best = false;  // memory: no copy of the mesh (the repair is exact anyway)
   }
   cfg.reorder_tets = opt.reorder_tets;
+  cfg.independent_splits = opt.independent_splits;
   flip::GFlip3D<B> alg(ctx, P, sid, m, cfg, st);
   if (opt.initial == Initial::grid) grid::grid_initial(ctx, alg, P, sid, m, lo, hi, opt, st);  // else: first tet
   alg.run();

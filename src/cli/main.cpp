@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
 
   // delaunay ------------------------------------------------------------------------------
   std::string in, out, algorithm = "auto", device = "auto", example, initial = "default", rule = "circumcenter";
-  bool check = false, stats = false, terminal = false, nonoptimal = false;
+  bool check = false, stats = false, terminal = false, nonoptimal = false, independent = false;
   std::uint64_t seed = 1;
   auto* del = app.add_subcommand("delaunay", "triangulate points and write the mesh");
   del->add_option("input", in, "points file: .xyz .txt .off .ply .node .npy");
@@ -133,6 +133,9 @@ int main(int argc, char** argv) {
   del->add_flag("--nonoptimal-flips", nonoptimal,
                 "gFlip3D: once flipping is stuck, non-improving flips that unlock stuck facets, keeping the "
                 "triangulation with the fewest non-locally-Delaunay facets (experimental; docs/gflip3d.md)");
+  del->add_flag("--independent-splits", independent,
+                "gFlip3D: a tet waits while a neighbour splits in the same round, and stuck tets stay active: "
+                "3-5x fewer facets left stuck, for 2-4x the rounds (a quality option; docs/gflip3d.md)");
   del->add_option("--initial", initial,
                   "what gFlip3D/gDel3D start from: default (one tetrahedron) | grid (the Delaunay triangulation of "
                   "a coarse grid's sample, from the dual of its digital Voronoi diagram; docs/grid.md)")
@@ -248,6 +251,7 @@ int main(int argc, char** argv) {
       o.backend = parse_backend(device);
       o.terminal_flipping = terminal;
       o.nonoptimal_flips = nonoptimal;
+      o.independent_splits = independent;
       o.initial = initial == "grid" ? gdel::Initial::grid : gdel::Initial::Default;
       o.insertion = rule == "random"     ? gdel::InsertionRule::Random
                     : rule == "centroid" ? gdel::InsertionRule::Centroid

@@ -15,6 +15,11 @@ using mesh::MeshView;
 using mesh::Tet;
 
 inline constexpr int kUndecidedResult = -2;
+// propose_flip: the tet has a face that is not locally Delaunay but no valid flip now
+// (stuck). With independent splits it stays in the active set (GFlip3D::commit_flips)
+// and is proposed again, this round and the next; otherwise it leaves like a tet with
+// nothing to flip.
+inline constexpr int kStuckResult = -3;
 
 // ---------------------------------------------------------------------------
 // 1-4 split: child i of tet o with new point p is (face i of o, p); its faces
@@ -64,6 +69,21 @@ GDEL_HD int split_locate(const Geo& g, const vid_t o[4], vid_t p, vid_t q, doubl
     if (in) return c2;
   }
   return kUndecidedResult;
+}
+
+// Independent splits (FlipConfig::independent_splits): tet t, which holds uninserted
+// points, leaves its point for a later round when a neighbour across any of its faces
+// also holds points (best[u] != 0: insert_round's per-tet key) and comes first in a fixed
+// order of tets: a multiplicative hash of the id, a bijection on 32 bits (not the id
+// itself: slots follow the space-filling curve, so id order has few local minima and
+// few tets would split per round). The splits of one round then share no face.
+GDEL_HD inline bool split_defers(const MeshView& m, const std::uint64_t* best, tid_t t) {
+  const std::uint32_t ht = static_cast<std::uint32_t>(t) * 0x9E3779B1u;
+  for (int f = 0; f < 4; ++f) {
+    const tid_t u = m.opp_tet(4 * std::int64_t(t) + f);
+    if (u >= 0 && best[u] != 0 && static_cast<std::uint32_t>(u) * 0x9E3779B1u < ht) return true;
+  }
+  return false;
 }
 
 // ---------------------------------------------------------------------------
@@ -152,12 +172,17 @@ GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, 
 }
 
 // The flip tet b proposes: that of its first face with a valid flip (faces that are not
-// flippable now are skipped), -1, or kUndecidedResult.
+// flippable now are skipped); kStuckResult when it has non-locally-Delaunay faces but
+// none is flippable, -1 when all its faces are locally Delaunay, or kUndecidedResult.
 template <bool Exact>
 GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, double* work) {
-  return static_cast<int>(for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
-    return std::int64_t(face_flip<Exact>(g, bv, apex, i, work));
+  bool stuck = false;
+  const int r = static_cast<int>(for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
+    const int f = face_flip<Exact>(g, bv, apex, i, work);
+    stuck = stuck || f == -1;
+    return std::int64_t(f);
   }));
+  return r == -1 && stuck ? kStuckResult : r;
 }
 
 // ---------------------------------------------------------------------------

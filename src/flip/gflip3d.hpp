@@ -32,6 +32,14 @@ struct FlipConfig {
   bool terminal = false;
   std::int64_t max_flip_iterations = 1 << 20;  // per flip loop; a safety net, never reached in practice
   bool tail_rule = std::getenv("GDEL_FLIP_EVERY_ROUND") == nullptr;  // study knob (ALGORITHMS.md §3.1)
+  // Independent splits (Options::independent_splits): in a round that flips, a tet that
+  // holds points splits only when no neighbour that also holds points comes first in a
+  // fixed random order of tets (split_defers), so the round's splits share no face; and
+  // stuck tets stay active (commit_flips, carry_). 3-5x fewer facets left stuck for 2-4x
+  // the rounds (bench/RESULTS.md, session 11). Off: every tet that holds points splits
+  // (the original rule) and a stuck tet leaves the active set. Rounds that only split
+  // (terminal variant, tail rule) never defer.
+  bool independent_splits = false;
   // Re-order tets by smallest vertex id every second round (ALGORITHMS.md §2.2): with
   // curve-sorted points this restores spatial locality in memory (Options::reorder_tets;
   // off by default: no gain measured on an H200, see bench/RESULTS.md).
@@ -77,7 +85,7 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {}
+        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {}
 
   // Debug aid: GDEL_CHECK_MESH=1 runs the structural invariant checker after every
   // step and throws at the first violation (validate level 1; slow).
@@ -105,7 +113,7 @@ class GFlip3D {
     std::int64_t remaining = static_cast<std::int64_t>(todo_.size());
     while (remaining > 0) {
       auto tr = std::chrono::steady_clock::now();
-      std::int64_t inserted = insert_round();
+      std::int64_t inserted = insert_round(flipping && cfg_.independent_splits);
       check_mesh("after split");
       st_.rounds++;
       t_insert_ += since(tr);
@@ -114,15 +122,17 @@ class GFlip3D {
         auto tf = std::chrono::steady_clock::now();
         const std::int64_t it0 = st_.flip_iterations, f0 = st_.flips23 + st_.flips32;
         flip_loop(/*all_tets=*/false, /*with_log=*/remaining > 0);
+        if (cfg_.independent_splits) carry_ = std::move(active_);  // what is still active: the stuck tets
         t_flip_ += since(tf);
         if (trace_)
           std::fprintf(stderr,
                        "gflip3d round %lld: inserted %lld, remaining %lld, tets %lld (slots %lld), flip iterations "
-                       "%lld, flips %lld, logged %lld, memory %.1f MiB, %.4f s\n",
+                       "%lld, flips %lld, logged %lld, stuck tets %lld, memory %.1f MiB, %.4f s\n",
                        static_cast<long long>(st_.rounds), static_cast<long long>(inserted),
                        static_cast<long long>(remaining), static_cast<long long>(mesh_.size()),
                        static_cast<long long>(mesh_.capacity()), static_cast<long long>(st_.flip_iterations - it0),
                        static_cast<long long>(st_.flips23 + st_.flips32 - f0), static_cast<long long>(log_.size()),
+                       static_cast<long long>(carry_.size()),
                        ctx_.memory().current() / 1048576.0, since(tf));
         if (remaining > 0) {
           auto tl = std::chrono::steady_clock::now();
@@ -137,6 +147,7 @@ class GFlip3D {
         // Tail rule (ALGORITHMS.md §3.1): the last tiny rounds are not worth a flip
         // loop each; insert them by splitting and flip once at the end.
         if (cfg_.tail_rule && remaining < inserted && inserted < n_ / 10) {
+          carry_.release();  // the final flip loop looks at every tet
           flipping = false;
           flipped_all_along = false;
         }
@@ -169,6 +180,7 @@ class GFlip3D {
     vert_tet_.release();
     todo_.release();
     active_.release();
+    carry_.release();
     aux_key_.release();
     aux_pick_.release();
     log_.release();
@@ -511,7 +523,7 @@ class GFlip3D {
     return v == "hash" ? 0 : v == "dyadic" ? 1 : v == "first" ? 2 : kDefaultTieMode;
   }
   static constexpr int kDefaultTieMode = 0;
-  std::int64_t insert_round() {
+  std::int64_t insert_round(bool independent) {
     clear_marks();
     MeshView m = mesh_.view();
     const Geo g = geo();
@@ -559,8 +571,11 @@ class GFlip3D {
     std::int64_t* wp = win.data();
     std::int64_t k = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(u), wp, [=] GDEL_HD(std::int64_t i) {
       const vid_t q = U[i];
-      return std::uint32_t(best[vt[q]]) == tie_break(std::uint32_t(q), tie);
+      const tid_t t = vt[q];
+      return std::uint32_t(best[t]) == tie_break(std::uint32_t(q), tie) && !(independent && split_defers(m, best, t));
     }));
+    // the tets that defer keep their points: their keys too go back to 0
+    if (independent) par::parallel_for(ctx_, u, [=] GDEL_HD(std::int64_t i) { best[vt[U[i]]] = 0; });
     par::mark(ctx_, "insert: select winners");
     // 3. slots: 3 new per split (child 0 reuses the split tet's slot)
     const mesh::SlotSource src = claim(3 * k);
@@ -643,8 +658,14 @@ class GFlip3D {
     rest.resize(r);
     todo_ = std::move(rest);
     par::mark(ctx_, "insert: compact points");
-    // the new children are the active set of the next flip loop
+    // the new children are the active set of the next flip loop, with the tets the last
+    // flip loop left stuck (carry_, alive ones)
     active_ = std::move(child);
+    if (carry_.size() > 0) {
+      append(active_, carry_);
+      carry_.release();
+      set_of(active_);
+    }
     return k;
   }
 
@@ -702,18 +723,30 @@ class GFlip3D {
   std::int64_t commit_flips(const tid_t* A, std::int64_t na, const std::int32_t* pp, bool with_log) {
     MeshView m = mesh_.view();
     const Geo g = geo();
-    // proposers
+    // proposers, and with independent splits the stuck tets (kStuckResult: faces not
+    // locally Delaunay, none flippable now). A stuck tet goes through as a proposer that
+    // is never accepted, so it stays in the active set: a flip nearby, this round or
+    // (through carry_) a later one, may make its face flippable. Without this a stuck
+    // facet whose tets hold no points (the hollow of a thin shell) was never looked at
+    // again (bench/RESULTS.md, session 11). Not under the original rule: on cospherical
+    // input most facets are stuck ties, re-proposed (exactly, with SoS) every iteration.
+    const bool keep = cfg_.independent_splits;
     Buffer<std::int64_t, B> pl(ctx_, static_cast<std::size_t>(na));
     std::int64_t* plp = pl.data();
     std::int64_t np = static_cast<std::int64_t>(par::select_indices(
-        ctx_, static_cast<std::size_t>(na), plp, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
+        ctx_, static_cast<std::size_t>(na), plp,
+        [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0 || (keep && pp[k] == kStuckResult); }));
     par::mark(ctx_, "flip: select proposers");
-    if (np == 0) return 0;
+    if (np == 0) {
+      active_.resize(0);
+      return 0;
+    }
     // vote: the smallest proposer index wins each tet (atomic max of INT_MAX - index, so
     // that -1 is the empty vote); accepted flips are disjoint
     std::int32_t* vote = aux_pick_.data();
     par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
       const std::int64_t k = plp[j];
+      if (pp[k] < 0) return;  // stuck
       tid_t ts[3];
       int nt = prop_tets(m, A[k], pp[k], ts);
       for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], static_cast<std::int32_t>(INT_MAX - A[k]));
@@ -723,13 +756,14 @@ class GFlip3D {
     par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
       const std::int64_t k = plp[j];
       tid_t ts[3];
-      int nt = prop_tets(m, A[k], pp[k], ts);
-      bool ok = true;
+      int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
+      bool ok = nt > 0;
       for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == static_cast<std::int32_t>(INT_MAX - A[k]);
       ap[j] = ok ? 1 : 0;
     });
     par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
       const std::int64_t k = plp[j];
+      if (pp[k] < 0) return;
       tid_t ts[3];
       int nt = prop_tets(m, A[k], pp[k], ts);
       for (int l = 0; l < nt; ++l) vote[ts[l]] = -1;
@@ -740,6 +774,13 @@ class GFlip3D {
     // initializer contains an extended lambda once it is used in a constant context)
     std::int64_t nfl = static_cast<std::int64_t>(
         par::select_indices(ctx_, static_cast<std::size_t>(np), flp, [=] GDEL_HD(std::int64_t j) { return ap[j] != 0; }));
+    if (nfl == 0) {  // only stuck tets: they stay active
+      Buffer<tid_t, B> act(ctx_, static_cast<std::size_t>(np));
+      tid_t* acp = act.data();
+      par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) { acp[j] = A[plp[j]]; });
+      active_ = std::move(act);
+      return 0;
+    }
     if (nfl > cfg_.max_flips_per_iteration) {  // the rest stand down (FlipConfig::max_flips_per_iteration)
       const std::int64_t keep = cfg_.max_flips_per_iteration;
       par::parallel_for(ctx_, nfl - keep, [=] GDEL_HD(std::int64_t f) { ap[flp[keep + f]] = 0; });
@@ -907,7 +948,7 @@ class GFlip3D {
       });
       mesh_.release(fr, nfl - n23);
     }
-    // next active set: rejected proposers and the flips' new tets
+    // next active set: rejected proposers (the stuck tets among them) and the flips' new tets
     Buffer<tid_t, B> nxt(ctx_, static_cast<std::size_t>(np + 3 * nfl));
     tid_t* nx = nxt.data();
     par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) { nx[j] = ap[j] ? -1 : A[plp[j]]; });
@@ -1180,6 +1221,7 @@ class GFlip3D {
   Buffer<tid_t, B> vert_tet_;  // per point: tet holding it while uninserted, -1 once inserted
   Buffer<vid_t, B> todo_;      // uninserted points
   Buffer<tid_t, B> active_;
+  Buffer<tid_t, B> carry_;  // between rounds: the tets the last flip loop left stuck
   Buffer<std::uint64_t, B> aux_key_;  // per tet slot; see grow_aux for the three
   Buffer<std::int32_t, B> aux_pick_;
   bool marks_dirty_ = false;  // aux_key_ holds flip stamps

@@ -7,3 +7,4 @@ TEST(GFlip3DGpu, NonoptimalFlipsReduceStuckFacets) { gdel::test::nonoptimal_redu
 TEST(GFlip3DGpu, AutoUsesNonoptimalFlipsWhenFewAreStuck) { gdel::test::nonoptimal_auto_cases(gdel::Backend::Cuda); }
 TEST(GFlip3DGpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cuda, 200000); }
 TEST(GFlip3DGpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cuda, 20000, "256"); }
+TEST(GFlip3DGpu, IndependentSplitsLeaveFewerStuckFacets) { gdel::test::gflip_independent_splits_cases(gdel::Backend::Cuda); }
