@@ -730,12 +730,12 @@ class GFlip3D {
     // facet whose tets hold no points (the hollow of a thin shell) was never looked at
     // again (bench/RESULTS.md, session 11). Not under the original rule: on cospherical
     // input most facets are stuck ties, re-proposed (exactly, with SoS) every iteration.
-    const bool keep = cfg_.independent_splits;
+    const bool keep_stuck = cfg_.independent_splits;
     Buffer<std::int64_t, B> pl(ctx_, static_cast<std::size_t>(na));
     std::int64_t* plp = pl.data();
     std::int64_t np = static_cast<std::int64_t>(par::select_indices(
         ctx_, static_cast<std::size_t>(na), plp,
-        [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0 || (keep && pp[k] == kStuckResult); }));
+        [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); }));
     par::mark(ctx_, "flip: select proposers");
     if (np == 0) {
       active_.resize(0);
