@@ -3,7 +3,7 @@
 // output with the exact verifier, prints a table and writes JSON.
 //
 //   gdel-bench [--dist uniform,gaussian,...] [--n 100000,1000000] [--methods LIST]
-//              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify]
+//              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify] [--seed 20261122]
 //   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
 //   methods: auto-cuda, auto-cpu (Algorithm::Auto), gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
 //            (gflip3d-* and gdel3d-* with "-grid-" in the name, e.g. gdel3d-grid-cuda: Options::initial = grid;
@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
   std::string json;
   bool do_verify = true;
   double weight_scale = 3.0;
+  std::uint64_t seed = 20261122;  // of the generated points
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -89,6 +90,7 @@ int main(int argc, char** argv) {
     else if (a == "--json") json = next();
     else if (a == "--no-verify") do_verify = false;
     else if (a == "--weight-scale") weight_scale = std::stod(next());
+    else if (a == "--seed") seed = std::stoull(next());
     else {
       std::fprintf(stderr, "gdel-bench: unknown argument %s\n", a.c_str());
       return 1;
@@ -115,7 +117,7 @@ int main(int argc, char** argv) {
     const bool is_file = dn.find('.') != std::string::npos;
     const std::vector<double> file_pts = is_file ? gdel::io::read_points(dn).xyz : std::vector<double>{};
     for (std::size_t n0 : sizes) {
-      const auto pts = is_file ? file_pts : gdel::gen::generate(gdel::gen::parse_distribution(dn), n0, 20261122);
+      const auto pts = is_file ? file_pts : gdel::gen::generate(gdel::gen::parse_distribution(dn), n0, seed);
       const std::size_t n = pts.size() / 3;
       if (is_file && n0 != sizes.front()) break;
       std::vector<double> wts;  // for the regular-triangulation methods

@@ -392,6 +392,36 @@ case "$plan" in
     step gflip3d 120 "$tbin/gpu_gflip3d"
     step gdel3d 160 "$tbin/gpu_gdel3d"
     ;;
+  s12)  # non-optimal flips by any valid ring triangulation of any edge of a stuck facet, and under
+         # independent splits a non-optimal round after every InsFlip round: the 10^6 quality table
+         # (four seeds on the thin shell), sphere and grid time, then the GPU tests
+    bench s12_q 150 --dist thin_shell,uniform,gaussian --n 1000000 \
+      --methods gflip3d-cuda,gflip3d-nonopt-cuda,gflip3d-indsplit-cuda,gflip3d-indsplit-nonopt-cuda --repeat 1
+    for s in 1 2 3; do
+      bench "s12_seed$s" 40 --dist thin_shell --n 1000000 --seed "$s" \
+        --methods gflip3d-indsplit-cuda,gflip3d-indsplit-nonopt-cuda --repeat 1
+    done
+    bench s12_t 90 --dist uniform,sphere,grid --n 1000000 --methods gdel3d-cuda-dev,gflip3d-indsplit-nonopt-cuda --repeat 1
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    step gdel3d 160 "$tbin/gpu_gdel3d"
+    ;;
+  s12b)  # the final binaries (the rounds at the end remove blocking edges only) against those of s12
+          # (carried as build/s12: the rounds at the end removed other edges too), Auto included,
+          # in the same call; then the thin-shell seeds again and the GPU tests
+    old=build/s12/gdel-bench
+    for v in new old; do
+      g=$gb
+      [ "$v" = old ] && g=$old
+      step "s12b_$v" 150 "$g" --dist uniform,thin_shell,grid --n 1000000 \
+        --methods gdel3d-cuda-dev,auto-cuda,gflip3d-nonopt-cuda,gflip3d-indsplit-nonopt-cuda --repeat 3 \
+        --json "$jdir/s12b_$v.json"
+    done
+    for s in 1 2 3; do
+      bench "s12b_seed$s" 30 --dist thin_shell --n 1000000 --seed "$s" --methods gflip3d-indsplit-nonopt-cuda --repeat 1
+    done
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    step gdel3d 160 "$tbin/gpu_gdel3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

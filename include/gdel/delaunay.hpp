@@ -51,14 +51,17 @@ struct Options {
   // at the end. For comparison only: it leaves many more non-Delaunay facets.
   bool terminal_flipping = false;
   // gFlip3D (and so gDel3D): non-optimal flipping (docs/gflip3d.md). Once flipping is
-  // stuck at the end, a facet that is not locally Delaunay but cannot be flipped (its
-  // reflex edge has degree > 3) gets valid, non-improving 2-3 flips around that edge
-  // until the edge has degree 3 and its 3-2 flip may remove the facet; normal flipping
-  // then resumes. Capped rounds; the triangulation with the fewest non-locally-Delaunay
-  // facets seen is kept. true: always (any algorithm built on gFlip3D). false: only
-  // under Algorithm::Auto, and only when the stuck facets are fewer than 1 % of the
-  // points (on cospherical input, where most facets are ties, it costs more than the
-  // repair it saves; measured in bench/RESULTS.md and docs/gflip3d.md).
+  // stuck at the end, a facet that is not locally Delaunay but cannot be flipped gets
+  // one of its edges removed: valid, non-improving 2-3 flips around that edge (following
+  // a valid triangulation of the edge's ring, found exactly) until the edge has degree 3
+  // and its 3-2 flip removes the edge and the facet; normal flipping then resumes.
+  // Capped rounds; the triangulation with the fewest non-locally-Delaunay facets seen is
+  // kept. With independent_splits, also one such round after every insertion round's
+  // flipping, from the tets it left stuck (when they are fewer than 1 % of the points).
+  // true: always (any algorithm built on gFlip3D). false: only under Algorithm::Auto,
+  // and only when the stuck facets are fewer than 1 % of the points (on cospherical
+  // input, where most facets are ties, it costs more than the repair it saves; measured
+  // in bench/RESULTS.md and docs/gflip3d.md).
   bool nonoptimal_flips = false;
   // gFlip3D (and so gDel3D): independent splits, a quality option. In an insertion
   // round that is followed by flipping, a tet holding points splits only if none of its
@@ -109,9 +112,10 @@ struct Stats {
   std::int64_t flips23 = 0, flips32 = 0;
   std::int64_t exact_evaluations = 0;  // items decided by the exact (non-filter) pass
   std::int64_t failed_vertices = 0;    // vertices of facets left not locally Delaunay (in the output)
-  // Options::nonoptimal_flips: rounds run, non-improving flips made (all rounds, kept or
-  // not), and the facets (∞'s included) not locally Delaunay when flipping first got
-  // stuck and in the triangulation kept (fewest seen); all 0 without the option
+  // Options::nonoptimal_flips: rounds run (those after insertion rounds included),
+  // non-improving flips made (all rounds, kept or not), and the facets (∞'s included)
+  // not locally Delaunay when the last flip loop got stuck and in the triangulation kept
+  // (fewest seen); all 0 without the option
   std::int64_t nonoptimal_rounds = 0, nonoptimal_flips = 0, nonld_facets_stuck = 0, nonld_facets_kept = 0;
   // gdel3d repair: vertices gFlip3D left failing (their stars are made convex), of those
   // stars the ones Flip-Flop convexified and the ones rebuilt by beneath-beyond insertion

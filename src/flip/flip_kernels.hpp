@@ -187,22 +187,27 @@ GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, double* work)
 
 // ---------------------------------------------------------------------------
 // Non-optimal flips (Options::nonoptimal_flips, docs/gflip3d.md): edge removal by ear
-// cutting. A stuck facet F = (p, q, c) of tet B = (p, q, c, v) with apex x, whose 2-3
-// flip is blocked by its edge e = pq and whose 3-2 flip is not available (e has degree
-// d > 3). Seen along e, the tets around e form a ring: B, then (p, q, v, L2), ...,
-// (p, q, L_{d-2}, x), and T = (p, q, x, c); ring vertices L = (c, v, L2, ..., x). A 2-3
-// flip of a facet (p, q, L_j), 2 <= j <= d-2, between the ring's tets (p, q, L_{j-1},
-// L_j) and (p, q, L_j, L_{j+1}), cuts the "ear" L_{j-1} L_j L_{j+1} off the ring: its
-// new tets are that triangle coned to p and to q, and (p, q, L_{j-1}, L_{j+1}); e's
-// degree drops by one, B and T stay. It is valid when its three new tets are positive
-// (exact), and usually not improving (the facet is locally Delaunay). After d - 3 ear
-// cuts the ring is (c, v, x) and the normal 3-2 flip of e removes e and F with it.
-// An ear is proposed only when the whole removal is possible: the ring is simulated,
-// cutting the first valid ear each time (exact tests on the ring's virtual tets), down
-// to (c, v, x), whose 3-2 flip must be valid too; so no flip is made towards a removal
-// that would stop half-way. Re-simulated at every step on the current ring, the same
-// plan continues. Ears with ∞ as an apex are never cut (they would carve a tet out of
-// the hull).
+// cutting. A stuck facet F = (p, q, c) of tet B = (p, q, c, v), apex x across it, not
+// locally Delaunay, whose 2-3 and 3-2 flips are both invalid, disappears with any of its
+// three edges. Seen along an edge e = pq of F, the tets around e form a ring: B =
+// (p, q, c, v), then (p, q, v, L2), ..., and back to B; ring vertices L = (c, v, L2, ...,
+// L_{d-1}), d = e's degree. Removing e replaces the ring by the tets (p, t) and (q, t)
+// for the triangles t of a triangulation of the ring polygon L; it is valid when every
+// such tet is positive, i.e. every t's plane separates p from q with the ring's sense
+// (exact). Such a triangulation is done by ear cuts: a 2-3 flip of a ring facet (p, q,
+// L_j), between the ring's tets (p, q, L_{j-1}, L_j) and (p, q, L_j, L_{j+1}), cuts the
+// ear L_{j-1} L_j L_{j+1} off the ring (its new tets: that triangle coned to p and to q,
+// and (p, q, L_{j-1}, L_{j+1})), which lowers e's degree by one; it is valid when its
+// three new tets are positive (exact, the normal 2-3 test) and usually not improving
+// (the facet is locally Delaunay). Once 3 ring vertices are left, the normal 3-2 flip
+// of e removes e, and F with it. Every ear of a valid triangulation but the one triangle
+// that e's line crosses is a valid ear cut, so ears can be cut until that triangle is
+// left. A tet proposes an ear only when a valid triangulation of the whole ring exists:
+// found by dynamic programming over the ring's chains (exact tests on at most C(d, 3)
+// triangles), and the ear proposed is the first valid one of that triangulation; so no
+// flip is made towards a removal that would stop half-way, and the plan re-found on the
+// reduced ring at the next step still exists. Rings through ∞ are left alone (every ring
+// vertex is in some triangle, and a tet of ∞ made by an ear cut would carve the hull).
 // ---------------------------------------------------------------------------
 inline constexpr int kMaxRing = 16;  // rings of higher degree are left alone
 
@@ -225,14 +230,15 @@ GDEL_HD inline bool same_orientation(const vid_t* bv, vid_t p, vid_t q, vid_t c,
   return (inv & 1) == 0;
 }
 
-// The first ear cut of the removal of edge (p, q) of tet b (see above; c: b's third
-// vertex of F, x: F's apex), as a packed proposal; -1 when the removal is not possible;
+// The first ear cut of a removal of edge (p, q) of tet b, c being b's third vertex of the
+// stuck facet (see above), as a packed proposal; -1 when no removal is possible;
 // kUndecidedResult.
 template <bool Exact>
 GDEL_HD std::int64_t edge_removal_ear(const Geo& g, const MeshView& m, tid_t b, vid_t p, vid_t q, vid_t c,
-                                      vid_t x, double* work) {
+                                      double* work) {
+  if (p == g.inf || q == g.inf) return -1;
   vid_t L[kMaxRing];
-  tid_t lt[kMaxRing];  // lt[j]: the ring's tet (p, q, L[j], L[j+1]); li[j]: its face opposite L[j]
+  tid_t lt[kMaxRing];  // lt[j]: the ring's tet (p, q, L[j], L[j+1 mod d]); li[j]: its face opposite L[j]
   int li[kMaxRing];
   int n = 0;
   L[n++] = c;
@@ -246,48 +252,79 @@ GDEL_HD std::int64_t edge_removal_ear(const Geo& g, const MeshView& m, tid_t b, 
       if (z == L[n - 1]) iu = l;
       else if (z != p && z != q) w = z;
     }
-    if (iu < 0 || n == kMaxRing) return -1;
+    if (iu < 0) return -1;
     lt[n - 1] = cur;
     li[n - 1] = iu;
+    if (w == c) break;  // around e and back at b
+    if (n == kMaxRing || w == g.inf || w == kNoVertex) return -1;
     L[n++] = w;
-    if (w == x) break;
     const fid_t o = m.opp(4 * std::int64_t(cur) + iu);
     if (o < 0) return -1;
     cur = facet_tet(o);
   }
-  if (n <= 3) return -1;
-  const vid_t* bv = m.tet[b].v;
-  const bool pq = same_orientation(bv, p, q, c, L[1]);  // (p, q, L[j], L[j+1]) positive
-  int idx[kMaxRing];
-  for (int j = 0; j < n; ++j) idx[j] = j;
-  std::int64_t first = -1;
-  for (int k = n; k > 3; --k) {  // k ring vertices left: cut one ear among idx[2 .. k-2]
-    int cut = -1;
-    for (int j = 2; j + 1 < k && cut < 0; ++j) {
-      const vid_t a = L[idx[j - 1]], r = L[idx[j]], y = L[idx[j + 1]];
-      if (a == g.inf || y == g.inf) continue;
-      const vid_t V[4] = {pq ? p : q, pq ? q : p, a, r};
-      const int bl = flip23_blockers<Exact>(g, V, 2, y, false, work);
-      if (bl == kUndecidedResult) return kUndecidedResult;
-      if (bl == 0) cut = j;
+  if (n <= 3) return -1;  // degree 3: the normal 3-2 flip's case
+  // (P, Q, L[j], L[j+1]) positive; a ring triangle (L[u], L[k], L[w]), u < k < w, is
+  // valid when P lies on its negative side and Q on its positive side
+  const bool pq = same_orientation(m.tet[b].v, p, q, c, L[1]);
+  const vid_t P = pq ? p : q, Q = pq ? q : p;
+  // ok[u] bit w: the chain L[u..w] closed by the chord (u, w) has a valid
+  // triangulation, whose triangle on that chord is (u, pick[u][w], w)
+  std::uint32_t ok[kMaxRing];
+  std::uint8_t pick[kMaxRing][kMaxRing];
+  for (int u = 0; u < n; ++u) ok[u] = u + 1 < n ? 1u << (u + 1) : 0u;
+  for (int len = 2; len < n; ++len)
+    for (int u = 0; u + len < n; ++u) {
+      const int w = u + len;
+      for (int k = u + 1; k < w; ++k) {
+        if (!((ok[u] >> k) & 1u) || !((ok[k] >> w) & 1u)) continue;
+        const int s0 = g.orient<Exact>(L[u], L[k], L[w], P, work);
+        if (s0 == par::kUndecided) return kUndecidedResult;
+        if (s0 >= 0) continue;
+        const int s1 = g.orient<Exact>(L[u], L[k], L[w], Q, work);
+        if (s1 == par::kUndecided) return kUndecidedResult;
+        if (s1 <= 0) continue;
+        ok[u] |= 1u << w;
+        pick[u][w] = static_cast<std::uint8_t>(k);
+        break;
+      }
     }
-    if (cut < 0) return -1;
-    if (k == n) first = pack_proposal(lt[cut - 1], (1 << 4) | (li[cut - 1] << 2));
-    for (int j = cut; j + 1 < k; ++j) idx[j] = idx[j + 1];
+  if (!((ok[0] >> (n - 1)) & 1u)) return -1;
+  // the triangulation's triangles, chord by chord from (0, d-1); the first ear that is a
+  // valid 2-3 flip (all but the one e's line crosses)
+  std::uint8_t su[kMaxRing], sw[kMaxRing];
+  int top = 0;
+  su[top] = 0;
+  sw[top++] = static_cast<std::uint8_t>(n - 1);
+  while (top > 0) {
+    --top;
+    const int u = su[top], w = sw[top], k = pick[u][w];
+    const int tip = (k == u + 1 && w == k + 1) ? k : (u == 0 && k == 1 && w == n - 1) ? 0 : (u == 0 && k == n - 2 && w == n - 1) ? n - 1 : -1;
+    if (tip >= 0) {
+      const int a = (tip + n - 1) % n;
+      const vid_t V[4] = {P, Q, L[a], L[tip]};
+      const int bl = flip23_blockers<Exact>(g, V, 2, L[(tip + 1) % n], false, work);
+      if (bl == kUndecidedResult) return kUndecidedResult;
+      if (bl == 0) return pack_proposal(lt[a], (1 << 4) | (li[a] << 2));
+    }
+    if (k - u >= 2) {
+      su[top] = static_cast<std::uint8_t>(u);
+      sw[top++] = static_cast<std::uint8_t>(k);
+    }
+    if (w - k >= 2) {
+      su[top] = static_cast<std::uint8_t>(k);
+      sw[top++] = static_cast<std::uint8_t>(w);
+    }
   }
-  // the last 3-2 flip: e crosses the triangle (c, v, x)
-  const int s0 = g.orient<Exact>(L[1], c, x, p, work);
-  const int s1 = g.orient<Exact>(L[1], c, x, q, work);
-  if (s0 == par::kUndecided || s1 == par::kUndecided) return kUndecidedResult;
-  return s0 != s1 ? first : -1;
+  return -1;
 }
 
 // Non-optimal proposal of tet b: for its first non-internal face that is not locally
-// Delaunay and stuck, the next ear cut of the removal of one of the face's blocking edges.
+// Delaunay and stuck, the next ear cut of the removal of one of the face's edges that
+// block its 2-3 flip, or with other_edges, failing those, of one of its other edges.
 // Returns a packed proposal, -1 (none, also when some face is normally flippable: the
 // normal flip loop goes first), or kUndecidedResult.
 template <bool Exact>
-GDEL_HD std::int64_t propose_nonoptimal(const Geo& g, const MeshView& m, tid_t b, double* work) {
+GDEL_HD std::int64_t propose_nonoptimal(const Geo& g, const MeshView& m, tid_t b, bool other_edges, double* work) {
   constexpr std::int64_t kNormal = -3;  // a face has a normal flip
   // (not const: nvcc 13 crashes on a const local whose initializer holds a lambda)
   std::int64_t r = for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
@@ -295,12 +332,13 @@ GDEL_HD std::int64_t propose_nonoptimal(const Geo& g, const MeshView& m, tid_t b
     if (p != -1) return p == kUndecidedResult ? std::int64_t(kUndecidedResult) : kNormal;
     const int bl = flip23_blockers<Exact>(g, bv, i, apex[i], true, work);
     if (bl == kUndecidedResult) return std::int64_t(kUndecidedResult);
-    for (int k = 0; k < 3; ++k) {
-      if (!(bl & (1 << k))) continue;
-      const std::int64_t e = edge_removal_ear<Exact>(g, m, b, bv[face_vertex(i, k)], bv[face_vertex(i, (k + 1) % 3)],
-                                                     bv[face_vertex(i, (k + 2) % 3)], apex[i], work);
-      if (e != -1) return e;  // a flip, or undecided
-    }
+    for (int pass = 0; pass < (other_edges ? 2 : 1); ++pass)
+      for (int k = 0; k < 3; ++k) {
+        if (((bl >> k) & 1) != (pass == 0 ? 1 : 0)) continue;
+        const std::int64_t e = edge_removal_ear<Exact>(g, m, b, bv[face_vertex(i, k)], bv[face_vertex(i, (k + 1) % 3)],
+                                                       bv[face_vertex(i, (k + 2) % 3)], work);
+        if (e != -1) return e;  // a flip, or undecided
+      }
     return std::int64_t(-1);
   });
   return r == kNormal ? -1 : r;

@@ -46,7 +46,8 @@ struct FlipConfig {
   bool reorder_tets = false;
   // Non-optimal flipping once flipping is stuck at the end (Options::nonoptimal_flips):
   // at most nonoptimal_rounds rounds, each of at most nonoptimal_steps parallel steps of
-  // non-improving flips followed by a normal flip loop.
+  // non-improving flips followed by a normal flip loop. With independent_splits also one
+  // such round after every InsFlip round's flip loop, from the tets it left stuck.
   bool nonoptimal = false;
   // ... skipped when the stuck facets exceed this share of the points (1: never skipped)
   double nonoptimal_max_share = 1.0;
@@ -123,6 +124,7 @@ class GFlip3D {
         const std::int64_t it0 = st_.flip_iterations, f0 = st_.flips23 + st_.flips32;
         flip_loop(/*all_tets=*/false, /*with_log=*/remaining > 0);
         if (cfg_.independent_splits) carry_ = std::move(active_);  // what is still active: the stuck tets
+        if (cfg_.independent_splits && cfg_.nonoptimal) nonoptimal_midrun(remaining > 0);
         t_flip_ += since(tf);
         if (trace_)
           std::fprintf(stderr,
@@ -998,8 +1000,10 @@ class GFlip3D {
         saved = true;
       }
       st_.nonoptimal_rounds++;
-      if (nonoptimal_round(stuck) == 0) break;  // nothing unlockable: unchanged
+      const std::int64_t made = nonoptimal_round(stuck, /*with_log=*/false, /*other_edges=*/false);
+      if (made == 0) break;  // nothing unlockable: unchanged
       cnt = non_ld_facets(stuck);
+      if (trace_) std::fprintf(stderr, "non-optimal round %d: %lld ear cuts, %lld non-LD facets\n", r, (long long)made, (long long)cnt);
       if (cnt < best) {
         best = cnt;
         saved = false;
@@ -1015,6 +1019,28 @@ class GFlip3D {
     }
     st_.nonld_facets_kept = cnt;
     active_.resize(0);
+  }
+
+  // Under independent splits, after an InsFlip round's flip loop: one non-optimal round
+  // from the tets that loop left stuck (carry_), logged while points remain (the ear
+  // cuts and the flips after them are nodes of the flip DAG like any flips); the tets
+  // still stuck after it, and those it started from, are carried to the next round. No
+  // exact count and no kept state here: later insertions and flips go on from whatever
+  // it leaves. Skipped when more tets are stuck than 1 % of the points (or
+  // nonoptimal_max_share, if smaller): on cospherical input nearly all of them are ties,
+  // which no ear cut helps, and the round would cost a flip loop over them every time.
+  void nonoptimal_midrun(bool with_log) {
+    const std::size_t k = carry_.size();
+    const double share = std::min(cfg_.nonoptimal_max_share, 0.01);
+    if (k == 0 || static_cast<double>(k) > share * static_cast<double>(n_)) return;
+    Buffer<tid_t, B> stuck(ctx_);
+    append(stuck, carry_);
+    set_of(stuck);
+    st_.nonoptimal_rounds++;
+    nonoptimal_round(stuck, with_log, /*other_edges=*/true);
+    carry_ = std::move(active_);  // what the last flip loop left stuck (or none: no ear cut)
+    append(carry_, stuck);
+    set_of(carry_);
   }
 
   // Facets not locally Delaunay (Geo::orient4, as the failed vertices): their number,
@@ -1059,23 +1085,31 @@ class GFlip3D {
   }
 
   // One round from the tets beside the stuck facets; returns the non-optimal flips made.
-  std::int64_t nonoptimal_round(const Buffer<tid_t, B>& stuck) {
+  // with_log: between insertion rounds (points remain): the flips are logged, and the
+  // log is consumed (relocate_through_dag) before each flip loop, which starts a new one.
+  // other_edges: a stuck facet's other edges are removed too where its blocking ones
+  // cannot be (in the rounds between insertion rounds; at the end their ear cuts churn:
+  // 1 596 facets left on the 10^6 thin shell against 1 494, bench/RESULTS.md session 12).
+  std::int64_t nonoptimal_round(const Buffer<tid_t, B>& stuck, bool with_log, bool other_edges) {
     Buffer<tid_t, B> touched(ctx_);
     std::int64_t made = 0;
+    if (with_log) relocate_through_dag();
     for (int step = 0; step < cfg_.nonoptimal_steps; ++step) {
-      const std::int64_t f = nonoptimal_step(stuck);
+      const std::int64_t f = nonoptimal_step(stuck, with_log, other_edges);
       if (f == 0) break;
       made += f;
       append(touched, active_);  // the new tets (and rejected proposers)
     }
     st_.nonoptimal_flips += made;
     if (made == 0) return 0;
+    if (with_log) relocate_through_dag();
     // normal flipping, the non-optimal flips' internal faces still trusted
     active_.resize(0);
     append(active_, stuck);
     append(active_, touched);
     set_of(active_);
-    flip_loop(/*all_tets=*/false, /*with_log=*/false);
+    flip_loop(/*all_tets=*/false, with_log);
+    if (with_log) relocate_through_dag();
     // then those faces checked as well
     set_of(touched);
     MeshView m = mesh_.view();
@@ -1084,14 +1118,14 @@ class GFlip3D {
       for (int i = 0; i < 4; ++i) m.set_face_flags(tp[j], i, 0);
     });
     active_ = std::move(touched);
-    flip_loop(/*all_tets=*/false, /*with_log=*/false);
+    flip_loop(/*all_tets=*/false, with_log);
     return made;
   }
 
   // One parallel step of non-optimal flips proposed by the tets `from`: at most one per
   // proposer, at most one per tet that carries it (the earliest proposer), then voted and
   // executed like any flips. Returns the flips made.
-  std::int64_t nonoptimal_step(const Buffer<tid_t, B>& from) {
+  std::int64_t nonoptimal_step(const Buffer<tid_t, B>& from, bool with_log, bool other_edges) {
     const std::int64_t n = static_cast<std::int64_t>(from.size());
     if (n == 0) return 0;
     const MeshView m = mesh_.view();
@@ -1103,10 +1137,10 @@ class GFlip3D {
     st_.exact_evaluations += fast_then_exact(
         ctx_, n, und.data(),
         [=] GDEL_HD(std::int64_t k) {
-          pp[k] = propose_nonoptimal<false>(g, m, F[k], nullptr);
+          pp[k] = propose_nonoptimal<false>(g, m, F[k], other_edges, nullptr);
           return pp[k] != kUndecidedResult;
         },
-        [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_nonoptimal<true>(g, m, F[k], work); });
+        [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_nonoptimal<true>(g, m, F[k], other_edges, work); });
     Buffer<std::int64_t, B> sel(ctx_, static_cast<std::size_t>(n));
     std::int64_t* sl = sel.data();
     std::int64_t ns = static_cast<std::int64_t>(  // (not const: nvcc, as above)
@@ -1129,7 +1163,7 @@ class GFlip3D {
     });
     par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) { vote[ap[j]] = -1; });
     par::mark(ctx_, "non-optimal flips: propose");
-    return commit_flips(ap, ns, cp, /*with_log=*/false);
+    return commit_flips(ap, ns, cp, with_log);
   }
 
   // --- periodic re-ordering of tets ---------------------------------------------------
