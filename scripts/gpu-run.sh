@@ -422,6 +422,14 @@ case "$plan" in
     step gflip3d 120 "$tbin/gpu_gflip3d"
     step gdel3d 160 "$tbin/gpu_gdel3d"
     ;;
+  s12c)  # issue 3's other criteria with the final binaries: the scanned models (carry .deps/models), gFlip3D's
+          # stages and flips/s at 10^5..10^7, InsFlip against the terminal variant at 10^6
+    export GDEL_MODELS_DIR="$PWD/.deps/models"
+    step models 120 "$tbin/gpu_models"
+    bench s12c_stages 120 --dist uniform --n 100000,1000000,10000000 --methods gflip3d-cuda --repeat 3
+    bench s12c_term 120 --dist uniform,gaussian,thin_shell --n 1000000 --methods gflip3d-cuda,gflip3d-terminal-cuda \
+      --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
