@@ -443,7 +443,7 @@ struct BuildFlipRecord {
   MeshView m;
   Geo g;
   const tid_t* A;
-  const std::int64_t* flp;
+  const std::int32_t* flp;
   const std::int32_t* pp;
   FlipRec* rec;
   template <bool Exact>

@@ -139,6 +139,7 @@ class GFlip3D {
         if (remaining > 0) {
           auto tl = std::chrono::steady_clock::now();
           relocate_through_dag();
+          log_.release();  // the insertion round does not need its storage
           t_relocate_ += since(tl);
         }
         if (remaining > 0 && cfg_.reorder_tets && st_.rounds % 2 == 0) {
@@ -682,12 +683,14 @@ class GFlip3D {
       a.resize(na);
       active_ = std::move(a);
     }
-    log_.clear();
+    // The log's storage: with a log, its capacity at once (commit_flips flushes before
+    // it would outgrow it, so it never grows by a copy: at 10^8 points the copy was the
+    // run's peak); without one (the last loop over every tet), given back.
+    const std::int64_t log_cap = log_capacity();
+    relocate_through_dag();  // a log left by the caller's flips (non-optimal steps) first
+    log_.release();
+    if (with_log) log_.reserve(static_cast<std::size_t>(log_cap));
     log_iters_.assign(1, 0);
-    const std::int64_t log_cap =
-        cfg_.log_records > 0
-            ? cfg_.log_records
-            : std::max<std::int64_t>(std::int64_t(1) << 16, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
     for (std::int64_t it = 0; it < cfg_.max_flip_iterations; ++it) {
       const std::int64_t na = static_cast<std::int64_t>(active_.size());
       if (na == 0) break;
@@ -714,7 +717,8 @@ class GFlip3D {
         },
         [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_flip<true>(g, m, A[k], work); });
     par::mark(ctx_, "flip: propose");
-    return commit_flips(A, na, pp, with_log) > 0;
+    und.release();
+    return commit_flips(A, na, prop, with_log) > 0;
   }
 
   // Executes proposals: pp[k] (propose_flip's code, < 0: none) is the flip proposed by
@@ -722,7 +726,9 @@ class GFlip3D {
   // smallest proposer wins each tet), executes them, repairs adjacency, and makes the
   // rejected proposers and the new tets the active set. Returns the number of flips;
   // 0 (nothing changed) when there was no proposal.
-  std::int64_t commit_flips(const tid_t* A, std::int64_t na, const std::int32_t* pp, bool with_log) {
+  // The proposal codes (prop) are released once the records are built.
+  std::int64_t commit_flips(const tid_t* A, std::int64_t na, Buffer<std::int32_t, B>& prop, bool with_log) {
+    const std::int32_t* pp = prop.data();
     MeshView m = mesh_.view();
     const Geo g = geo();
     // proposers, and with independent splits the stuck tets (kStuckResult: faces not
@@ -733,16 +739,19 @@ class GFlip3D {
     // again (bench/RESULTS.md, session 11). Not under the original rule: on cospherical
     // input most facets are stuck ties, re-proposed (exactly, with SoS) every iteration.
     const bool keep_stuck = cfg_.independent_splits;
-    Buffer<std::int64_t, B> pl(ctx_, static_cast<std::size_t>(na));
-    std::int64_t* plp = pl.data();
-    std::int64_t np = static_cast<std::int64_t>(par::select_indices(
-        ctx_, static_cast<std::size_t>(na), plp,
-        [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); }));
-    par::mark(ctx_, "flip: select proposers");
+    auto is_proposer = [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); };
+    // The proposer list (positions in A: na < 2^31, as tets) is counted first and sized
+    // exactly: in the last flip loop, over every tet, few of them propose, and a list
+    // sized by the active set was 54 bytes per point of the run's peak (bench/RESULTS.md).
+    std::int64_t np = par::count_indices(ctx_, static_cast<std::size_t>(na), is_proposer);
     if (np == 0) {
-      active_.resize(0);
+      active_.release();
       return 0;
     }
+    Buffer<std::int32_t, B> pl(ctx_, static_cast<std::size_t>(np));
+    std::int32_t* plp = pl.data();
+    par::select_indices(ctx_, static_cast<std::size_t>(na), plp, is_proposer);
+    par::mark(ctx_, "flip: select proposers");
     // vote: the smallest proposer index wins each tet (atomic max of INT_MAX - index, so
     // that -1 is the empty vote); accepted flips are disjoint
     std::int32_t* vote = aux_pick_.data();
@@ -770,8 +779,8 @@ class GFlip3D {
       int nt = prop_tets(m, A[k], pp[k], ts);
       for (int l = 0; l < nt; ++l) vote[ts[l]] = -1;
     });
-    Buffer<std::int64_t, B> fl(ctx_, static_cast<std::size_t>(np));
-    std::int64_t* flp = fl.data();
+    Buffer<std::int32_t, B> fl(ctx_, static_cast<std::size_t>(np));  // positions in A, as pl
+    std::int32_t* flp = fl.data();
     // (not const: nvcc 13.0 crashes, "i_copy_expr_tree", on a const local whose
     // initializer contains an extended lambda once it is used in a constant context)
     std::int64_t nfl = static_cast<std::int64_t>(
@@ -838,24 +847,24 @@ class GFlip3D {
     const mesh::SlotSource src = claim(n23);
     m = mesh_.view();
     par::mark(ctx_, "flip: count 2-3 + claim slots");
-    // records
-    const std::int64_t log0 = static_cast<std::int64_t>(log_.size());
+    // records; a log that this iteration's would take past its capacity is first
+    // consumed (the points relocated through it: same result, one walk earlier)
+    std::int64_t log0 = static_cast<std::int64_t>(log_.size());
+    if (with_log && log0 > 0 && log0 + nfl > log_capacity()) {
+      relocate_through_dag();
+      log0 = 0;
+    }
+    if (log0 == 0 && static_cast<std::size_t>(nfl) > log_.capacity()) log_.release();  // no copy to keep
     log_.resize(static_cast<std::size_t>(log0 + nfl));
     FlipRec* rec = log_.data() + log0;
     // Every flip has 6 external faces (2-3: 2 old tets x 3; 3-2: 3 x 2). Entry 6f + e
-    // holds the new facet (en), the old tet's facet it replaces (ef: o << 2 | face, for
+    // holds the new facet (en: a << 2 | face, of the record's new tet out[a]), the old tet's facet it replaces (ef: o << 2 | face, for
     // old tet in[o] of the record) and that facet's neighbour (eo). A flip's old tets are
     // stamped with (iteration, f) in aux_key_, so that a neighbour taken by another flip
     // of this iteration finds its new facet among that flip's entries.
     std::uint64_t* mark = aux_key_.data();
     const std::uint64_t stamp = static_cast<std::uint64_t>((st_.flip_iterations & 0x7fffffff) + 1) << 32;
     marks_dirty_ = true;
-    Buffer<fid_t, B> ext_new(ctx_, static_cast<std::size_t>(6 * nfl));
-    Buffer<std::uint8_t, B> ext_from(ctx_, static_cast<std::size_t>(6 * nfl));
-    Buffer<fid_t, B> ext_old(ctx_, static_cast<std::size_t>(6 * nfl));
-    fid_t* en = ext_new.data();
-    std::uint8_t* ef = ext_from.data();
-    fid_t* eo = ext_old.data();
     Buffer<std::int8_t, B> und2(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(nfl, 1)));
     // flip kernel: (a) build records and new tets' vertices (3-2 ordering may need
     // exact orientation); (b) write. Pass (a) is split fast/exact.
@@ -864,6 +873,15 @@ class GFlip3D {
         ctx_, nfl, und2.data(), [=] GDEL_HD(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
         [=] GDEL_HD(std::int64_t f, double* work) { bfr.template run<true>(f, work); });
     par::mark(ctx_, "flip: records");
+    prop.release();  // (the codes and the accepted list are the records' now)
+    fl.release();
+    und2.release();
+    Buffer<std::uint8_t, B> ext_new(ctx_, static_cast<std::size_t>(6 * nfl));
+    Buffer<std::uint8_t, B> ext_from(ctx_, static_cast<std::size_t>(6 * nfl));
+    Buffer<fid_t, B> ext_old(ctx_, static_cast<std::size_t>(6 * nfl));
+    std::uint8_t* en = ext_new.data();
+    std::uint8_t* ef = ext_from.data();
+    fid_t* eo = ext_old.data();
     // (b) slots, vertices, internal links, external messages
     par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
       FlipRec& r = rec[f];
@@ -905,7 +923,7 @@ class GFlip3D {
           for (int o = 0; o < no; ++o) {
             if (!has_face(ov[o], fvx)) continue;
             const int lo = opposite_of_face(ov[o], fvx);
-            en[6 * f + ne] = pack_facet(sa, l);
+            en[6 * f + ne] = static_cast<std::uint8_t>(a << 2 | l);
             ef[6 * f + ne] = static_cast<std::uint8_t>(o << 2 | lo);
             eo[6 * f + ne] = oopp[o][lo];
             ++ne;
@@ -918,7 +936,7 @@ class GFlip3D {
     par::mark(ctx_, "flip: write tets");
     // adjacency across external faces
     par::parallel_for(ctx_, 6 * nfl, [=] GDEL_HD(std::int64_t e) {
-      const fid_t nf = en[e];
+      const fid_t nf = pack_facet(rec[e / 6].out[en[e] >> 2], en[e] & 3);
       fid_t nb = eo[e];
       if (nb >= 0) {
         const tid_t u = facet_tet(nb);
@@ -928,7 +946,7 @@ class GFlip3D {
           const std::int64_t g = static_cast<std::int64_t>(mk & 0xffffffff);
           int k = 0;
           while (k < 5 && pack_facet(rec[g].in[ef[6 * g + k] >> 2], ef[6 * g + k] & 3) != nb) ++k;
-          nb = en[6 * g + k];
+          nb = pack_facet(rec[g].out[en[6 * g + k] >> 2], en[6 * g + k] & 3);
         } else {
           m.set_opp(4 * std::int64_t(u) + j, nf);
           m.set_face_flags(u, j, 0);
@@ -940,7 +958,6 @@ class GFlip3D {
     ext_new.release();  // not needed past here: room for the next active set's sort
     ext_from.release();
     ext_old.release();
-    und2.release();
     // 3-2 flips free their third slot, in flip order (deterministic free stack)
     if (nfl > n23) {
       Buffer<tid_t, B> freed(ctx_, static_cast<std::size_t>(nfl - n23));
@@ -950,6 +967,7 @@ class GFlip3D {
       });
       mesh_.release(fr, nfl - n23);
     }
+    off23.release();
     // next active set: rejected proposers (the stuck tets among them) and the flips' new tets
     Buffer<tid_t, B> nxt(ctx_, static_cast<std::size_t>(np + 3 * nfl));
     tid_t* nx = nxt.data();
@@ -1085,15 +1103,14 @@ class GFlip3D {
   }
 
   // One round from the tets beside the stuck facets; returns the non-optimal flips made.
-  // with_log: between insertion rounds (points remain): the flips are logged, and the
-  // log is consumed (relocate_through_dag) before each flip loop, which starts a new one.
+  // with_log: between insertion rounds (points remain): the flips are logged (flip_loop
+  // consumes a pending log before it starts its own).
   // other_edges: a stuck facet's other edges are removed too where its blocking ones
   // cannot be (in the rounds between insertion rounds; at the end their ear cuts churn:
   // 1 596 facets left on the 10^6 thin shell against 1 494, bench/RESULTS.md session 12).
   std::int64_t nonoptimal_round(const Buffer<tid_t, B>& stuck, bool with_log, bool other_edges) {
     Buffer<tid_t, B> touched(ctx_);
     std::int64_t made = 0;
-    if (with_log) relocate_through_dag();
     for (int step = 0; step < cfg_.nonoptimal_steps; ++step) {
       const std::int64_t f = nonoptimal_step(stuck, with_log, other_edges);
       if (f == 0) break;
@@ -1102,14 +1119,12 @@ class GFlip3D {
     }
     st_.nonoptimal_flips += made;
     if (made == 0) return 0;
-    if (with_log) relocate_through_dag();
     // normal flipping, the non-optimal flips' internal faces still trusted
     active_.resize(0);
     append(active_, stuck);
     append(active_, touched);
     set_of(active_);
     flip_loop(/*all_tets=*/false, with_log);
-    if (with_log) relocate_through_dag();
     // then those faces checked as well
     set_of(touched);
     MeshView m = mesh_.view();
@@ -1163,7 +1178,7 @@ class GFlip3D {
     });
     par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) { vote[ap[j]] = -1; });
     par::mark(ctx_, "non-optimal flips: propose");
-    return commit_flips(ap, ns, cp, with_log);
+    return commit_flips(ap, ns, code, with_log);
   }
 
   // --- periodic re-ordering of tets ---------------------------------------------------
@@ -1184,6 +1199,12 @@ class GFlip3D {
     // per-tet auxiliary state is all at its reset value between rounds, but for stale
     // flip stamps, which never match a later iteration (insert_round clears them)
     grow_aux();
+  }
+
+  // Records the flip log holds before the points are relocated through it (FlipConfig).
+  std::int64_t log_capacity() const {
+    if (cfg_.log_records > 0) return cfg_.log_records;
+    return std::max<std::int64_t>(std::int64_t(1) << 16, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
   }
 
   // --- relocation of uninserted points through the flip DAG --------------------------
