@@ -430,6 +430,21 @@ case "$plan" in
     bench s12c_term 120 --dist uniform,gaussian,thin_shell --n 1000000 --methods gflip3d-cuda,gflip3d-terminal-cuda \
       --repeat 1
     ;;
+  s13)  # the flip loop's temporaries (exact-size 4-byte lists, the log reserved once and flushed before it
+         # would grow): 10^8 uniform with the step profile, verified; then the GPU tests
+    GDEL_PROFILE=1 bench s13_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    step gdel3d 160 "$tbin/gpu_gdel3d"
+    ;;
+  s13b)  # time against the binary before the change (carried as build/s13base), same call: 10^7 and 10^6
+    old=build/s13base/gdel-bench
+    for v in new old; do
+      g=$gb
+      [ "$v" = old ] && g=$old
+      step "s13b_$v" 150 "$g" --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev,gflip3d-cuda --repeat 3 \
+        --json "$jdir/s13b_$v.json"
+    done
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
