@@ -858,8 +858,9 @@ class GFlip3D {
     log_.resize(static_cast<std::size_t>(log0 + nfl));
     FlipRec* rec = log_.data() + log0;
     // Every flip has 6 external faces (2-3: 2 old tets x 3; 3-2: 3 x 2). Entry 6f + e
-    // holds the new facet (en: a << 2 | face, of the record's new tet out[a]), the old tet's facet it replaces (ef: o << 2 | face, for
-    // old tet in[o] of the record) and that facet's neighbour (eo). A flip's old tets are
+    // holds the new facet (en: a << 2 | face, for new tet out[a] of the record), the old
+    // tet's facet it replaces (ef: o << 2 | face, for old tet in[o] of the record) and
+    // that facet's neighbour (eo). A flip's old tets are
     // stamped with (iteration, f) in aux_key_, so that a neighbour taken by another flip
     // of this iteration finds its new facet among that flip's entries.
     std::uint64_t* mark = aux_key_.data();
