@@ -445,6 +445,34 @@ case "$plan" in
         --json "$jdir/s13b_$v.json"
     done
     ;;
+  s14)  # the context's own memory pool (freed memory kept until the context ends) against the device's default
+         # pool (GDEL_DEVICE_POOL=default: unused memory back to the driver at every host sync) and against the
+         # binary before the change (7d969e5's gdel-bench carried as build/s14old), same call: 10^6 and 10^7 uniform, the
+         # step profiles at 10^7, the other generators at 10^6
+    old=build/s14old/gdel-bench
+    for v in pool default old; do
+      g=$gb
+      [ "$v" = old ] && g=$old
+      pool=own
+      [ "$v" = default ] && pool=default
+      step "s14_$v" 120 env GDEL_DEVICE_POOL=$pool "$g" --dist uniform --n 1000000,10000000 \
+        --methods gdel3d-cuda-dev,gflip3d-cuda-dev --repeat 3 --json "$jdir/s14_$v.json"
+    done
+    for pool in own default; do
+      step "s14_prof_$pool" 40 env GDEL_PROFILE=1 GDEL_DEVICE_POOL=$pool "$gb" --dist uniform --n 10000000 \
+        --methods gdel3d-cuda-dev --repeat 1 --json "$jdir/s14_prof_$pool.json"
+    done
+    for pool in own default; do
+      step "s14_gen_$pool" 90 env GDEL_DEVICE_POOL=$pool "$gb" --dist gaussian,thin_shell,ball,grid,sphere --n 1000000 \
+        --methods gdel3d-cuda-dev,auto-cuda-dev --repeat 1 --json "$jdir/s14_gen_$pool.json"
+    done
+    ;;
+  s14b)  # the same binaries: 10^8 uniform (the pool keeps freed memory: does it still fit?), then the GPU tests
+    GDEL_PROFILE=1 bench s14b_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    step gflip3d 100 "$tbin/gpu_gflip3d"
+    step gdel3d 120 "$tbin/gpu_gdel3d"
+    step hostile 60 "$tbin/gpu_hostile"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

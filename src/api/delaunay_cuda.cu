@@ -38,13 +38,20 @@ namespace api::device_detail {
 
 using I64 = std::int64_t;
 
-// cudaMalloc'd result memory (outlives the context and its stream-ordered pool).
+// cudaMalloc'd result memory (outlives the context and its stream-ordered pool). When it
+// fails and a context is given, the context's pool returns its unused memory and the
+// allocation is tried once more.
 template <class T>
-DeviceArray<T> allocate(int device, I64 n) {
+DeviceArray<T> allocate(par::Context<par::Cuda>* ctx, int device, I64 n) {
   if (n <= 0) return DeviceArray<T>(nullptr, 0, device);
   void* p = nullptr;
   const std::size_t bytes = static_cast<std::size_t>(n) * sizeof(T);
   cudaError_t e = cudaMalloc(&p, bytes);
+  if (e == cudaErrorMemoryAllocation && ctx) {
+    cudaGetLastError();
+    ctx->trim_pool();
+    e = cudaMalloc(&p, bytes);
+  }
   if (e == cudaErrorMemoryAllocation) {
     cudaGetLastError();
     std::size_t free_b = 0, total_b = 0;
@@ -66,7 +73,7 @@ struct DeviceOutput {
 
   const double* input(par::Buffer<double, par::Cuda>&, std::span<const double> points) { return points.data(); }
   void representative(par::Context<par::Cuda>& ctx, const par::Buffer<I64, par::Cuda>& rep, I64 n, Triangulation&) {
-    auto a = allocate<std::int32_t>(device, n);
+    auto a = allocate<std::int32_t>(&ctx, device, n);
     std::int32_t* ap = a.data();
     const I64* rp = rep.data();
     par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) { ap[i] = static_cast<std::int32_t>(rp[i]); });
@@ -74,7 +81,7 @@ struct DeviceOutput {
   }
   void failed_vertices(par::Context<par::Cuda>& ctx, const par::Buffer<I64, par::Cuda>& fl, std::size_t nfv,
                        const par::Buffer<I64, par::Cuda>& sid, Triangulation&) {
-    auto a = allocate<std::int32_t>(device, static_cast<I64>(nfv));
+    auto a = allocate<std::int32_t>(&ctx, device, static_cast<I64>(nfv));
     std::int32_t* ap = a.data();
     const I64* flp = fl.data();
     const I64* sp = sid.data();
@@ -85,8 +92,8 @@ struct DeviceOutput {
   }
   void tets(par::Buffer<std::int32_t, par::Cuda>& tv, par::Buffer<std::int32_t, par::Cuda>& tn, Triangulation&) {
     auto& ctx = tv.context();
-    auto a = allocate<std::int32_t>(device, static_cast<I64>(tv.size()));
-    auto b = allocate<std::int32_t>(device, static_cast<I64>(tn.size()));
+    auto a = allocate<std::int32_t>(&ctx, device, static_cast<I64>(tv.size()));
+    auto b = allocate<std::int32_t>(&ctx, device, static_cast<I64>(tn.size()));
     if (tv.size())
       GDEL_CUDA_CHECK(cudaMemcpyAsync(a.data(), tv.data(), tv.bytes(), cudaMemcpyDeviceToDevice, ctx.stream()));
     if (tn.size())
@@ -121,7 +128,7 @@ struct MergeExtent {
 
 DeviceArray<double> copy_to_device(std::span<const double> host, int device) {
   GDEL_CUDA_CHECK(cudaSetDevice(device));
-  auto a = api::device_detail::allocate<double>(device, static_cast<std::int64_t>(host.size()));
+  auto a = api::device_detail::allocate<double>(nullptr, device, static_cast<std::int64_t>(host.size()));
   if (!host.empty()) GDEL_CUDA_CHECK(cudaMemcpy(a.data(), host.data(), host.size_bytes(), cudaMemcpyHostToDevice));
   return a;
 }

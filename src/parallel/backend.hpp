@@ -105,8 +105,15 @@ class Context<Cpu> {
 };
 
 #if defined(__CUDACC__)
-// One device, one stream. Memory comes from the device's stream-ordered pool
-// (cudaMallocAsync), so temporaries are cheap and need no host synchronisation.
+// One device, one stream. Memory comes from a stream-ordered pool that the context owns
+// (cudaMallocFromPoolAsync), so temporaries are cheap and need no host synchronisation.
+// The pool keeps what is freed until the context ends (release threshold: no limit): a
+// pool with the default threshold (0) hands its unused memory back to the driver at
+// every host synchronisation, and the next allocations map it again, which cost more
+// than the flip loop's kernels (bench/RESULTS.md, session 14). The memory goes back when
+// the context is destroyed, or when an allocation fails (the pool is trimmed, then the
+// allocation is tried once more). GDEL_DEVICE_POOL=default selects the device's default
+// pool with its default threshold instead (for comparison).
 template <>
 class Context<Cuda> {
  public:
@@ -119,6 +126,13 @@ class Context<Cuda> {
   int device() const { return device_; }
   int sm_count() const { return sm_count_; }
   void synchronize();
+  // The context's pool; nullptr with GDEL_DEVICE_POOL=default (cudaMallocAsync's pool).
+  cudaMemPool_t pool() const { return pool_; }
+  // Waits for the stream, then returns the pool's unused memory to the driver.
+  void trim_pool();
+  // Device memory free for new allocations: the driver's free memory and what the
+  // pool holds unused.
+  std::size_t free_bytes();
 
   // Step profiler (parallel/profile.hpp): events on the stream, read back by
   // profile_report() (synchronizes).
@@ -136,6 +150,7 @@ class Context<Cuda> {
   void record_event();
   MemoryStats mem_;
   cudaStream_t stream_ = nullptr;
+  cudaMemPool_t pool_ = nullptr;
   int device_ = 0;
   int sm_count_ = 1;
   bool prof_on_ = profiling_requested();

@@ -2,6 +2,10 @@
 #include "parallel/backend.hpp"
 #include "parallel/check.hpp"
 
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+
 namespace gdel::par {
 
 Context<Cuda>::Context(int device) : device_(device) {
@@ -14,6 +18,22 @@ Context<Cuda>::Context(int device) : device_(device) {
   GDEL_CUDA_CHECK(cudaSetDevice(device_));
   GDEL_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
   GDEL_CUDA_CHECK(cudaDeviceGetAttribute(&sm_count_, cudaDevAttrMultiProcessorCount, device_));
+  const char* kind = std::getenv("GDEL_DEVICE_POOL");
+  if (!(kind && std::strcmp(kind, "default") == 0)) {
+    cudaMemPoolProps props{};
+    props.allocType = cudaMemAllocationTypePinned;
+    props.handleTypes = cudaMemHandleTypeNone;
+    props.location.type = cudaMemLocationTypeDevice;
+    props.location.id = device_;
+    cudaError_t e = cudaMemPoolCreate(&pool_, &props);
+    if (e != cudaSuccess) {
+      cudaStreamDestroy(stream_);
+      stream_ = nullptr;
+      GDEL_CUDA_CHECK(e);
+    }
+    std::uint64_t keep = ~std::uint64_t(0);  // keep everything freed until the context ends
+    GDEL_CUDA_CHECK(cudaMemPoolSetAttribute(pool_, cudaMemPoolAttrReleaseThreshold, &keep));
+  }
   if (prof_on_) profile_start();
 }
 
@@ -22,7 +42,25 @@ Context<Cuda>::~Context() {
     cudaStreamSynchronize(stream_);
     cudaStreamDestroy(stream_);
   }
+  // Allocations still outstanding (none, when every Buffer died first) would keep the
+  // pool's memory until they are freed; the driver destroys the pool then.
+  if (pool_) cudaMemPoolDestroy(pool_);
   for (cudaEvent_t e : prof_events_) cudaEventDestroy(e);
+}
+
+void Context<Cuda>::trim_pool() {
+  GDEL_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  if (pool_) GDEL_CUDA_CHECK(cudaMemPoolTrimTo(pool_, 0));
+}
+
+std::size_t Context<Cuda>::free_bytes() {
+  std::size_t free_b = 0, total_b = 0;
+  GDEL_CUDA_CHECK(cudaMemGetInfo(&free_b, &total_b));
+  if (!pool_) return free_b;
+  std::uint64_t reserved = 0, used = 0;
+  GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(pool_, cudaMemPoolAttrReservedMemCurrent, &reserved));
+  GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(pool_, cudaMemPoolAttrUsedMemCurrent, &used));
+  return free_b + static_cast<std::size_t>(reserved > used ? reserved - used : 0);
 }
 
 void Context<Cuda>::record_event() {

@@ -53,7 +53,15 @@ struct Memory<Cuda> {
                                   " left of the limit of " + std::to_string(lim) + " (Options::device_memory_limit)",
                               bytes, lim - std::min(lim, c.memory().current()));
     void* p = nullptr;
-    cudaError_t e = cudaMallocAsync(&p, bytes, c.stream());
+    auto alloc = [&] {
+      return c.pool() ? cudaMallocFromPoolAsync(&p, bytes, c.pool(), c.stream()) : cudaMallocAsync(&p, bytes, c.stream());
+    };
+    cudaError_t e = alloc();
+    if (e == cudaErrorMemoryAllocation && c.pool()) {  // the pool's unused memory back, and once more
+      cudaGetLastError();
+      c.trim_pool();
+      e = alloc();
+    }
     if (e == cudaErrorMemoryAllocation) {
       cudaGetLastError();
       std::size_t free_b = 0, total_b = 0;

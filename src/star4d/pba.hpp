@@ -141,11 +141,7 @@ inline std::size_t free_memory(par::Context<par::Cpu>&) {
   return static_cast<std::size_t>(pages) * static_cast<std::size_t>(page);
 }
 #if defined(__CUDACC__)
-inline std::size_t free_memory(par::Context<par::Cuda>&) {
-  std::size_t f = 0, t = 0;
-  GDEL_CUDA_CHECK(cudaMemGetInfo(&f, &t));
-  return f;
-}
+inline std::size_t free_memory(par::Context<par::Cuda>& ctx) { return ctx.free_bytes(); }
 #endif
 
 // A quarter of the backend's free memory.

@@ -12,8 +12,7 @@ VerifyReport verify(const double* xyz, std::int64_t n, const std::int32_t* tets,
     // Chunks sized from the free device memory left after the uploads (points,
     // weights, tets, one sign byte per tet): a facet chunk needs about 40 bytes per
     // item (ids, keys, the radix sort's second buffers, kinds, selections).
-    std::size_t free_b = 0, total_b = 0;
-    GDEL_CUDA_CHECK(cudaMemGetInfo(&free_b, &total_b));
+    const std::size_t free_b = ctx.free_bytes();
     const std::int64_t uploads = (w ? 32 : 24) * n + 17 * m;
     const std::int64_t left = static_cast<std::int64_t>(free_b) - uploads;
     chunk_items = std::max<std::int64_t>(std::int64_t(1) << 22, left / 64);
