@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "gdel/delaunay.hpp"
+#include "gdel/errors.hpp"
 #include "gdel/regular.hpp"
 #include "gdel/verify.hpp"
 #include "gen/generators.hpp"
@@ -54,6 +55,15 @@ struct Row {
   std::string note;
 };
 
+// A number given to option `opt`; the whole text must be one (InvalidInput otherwise).
+double number(const std::string& opt, const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || v < 0)
+    throw gdel::InvalidInput(opt + " expects a non-negative number, got '" + text + "'");
+  return v;
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0 : v[v.size() / 2];
@@ -61,7 +71,7 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int bench_main(int argc, char** argv) {
   std::vector<std::string> dists = {"uniform", "gaussian", "thin_shell", "grid", "sphere", "ball"};
   std::vector<std::size_t> sizes = {100000, 1000000};
   std::vector<std::string> methods;
@@ -83,14 +93,20 @@ int main(int argc, char** argv) {
     if (a == "--dist") dists = split(next());
     else if (a == "--n") {
       sizes.clear();
-      for (auto& s : split(next())) sizes.push_back(static_cast<std::size_t>(std::stod(s)));
+      for (auto& s : split(next())) sizes.push_back(static_cast<std::size_t>(number("--n", s)));
     } else if (a == "--methods") methods = split(next());
-    else if (a == "--repeat") repeat = std::max(1, std::atoi(next().c_str()));
-    else if (a == "--cpu-max") cpu_max = static_cast<std::size_t>(std::stod(next()));
+    else if (a == "--repeat") repeat = std::max(1, static_cast<int>(number("--repeat", next())));
+    else if (a == "--cpu-max") cpu_max = static_cast<std::size_t>(number("--cpu-max", next()));
     else if (a == "--json") json = next();
     else if (a == "--no-verify") do_verify = false;
-    else if (a == "--weight-scale") weight_scale = std::stod(next());
-    else if (a == "--seed") seed = std::stoull(next());
+    else if (a == "--weight-scale") weight_scale = number("--weight-scale", next());
+    else if (a == "--seed") {
+      const std::string t = next();
+      char* end = nullptr;
+      seed = std::strtoull(t.c_str(), &end, 10);
+      if (t.empty() || t[0] == '-' || end != t.c_str() + t.size())
+        throw gdel::InvalidInput("--seed expects a non-negative integer, got '" + t + "'");
+    }
     else {
       std::fprintf(stderr, "gdel-bench: unknown argument %s\n", a.c_str());
       return 1;
@@ -316,4 +332,15 @@ int main(int argc, char** argv) {
     f << "]\n";
   }
   return 0;
+}
+
+// Bad arguments (an unknown distribution, a file that cannot be read, a number that is
+// not one) end with a message and status 1, not with std::terminate.
+int main(int argc, char** argv) {
+  try {
+    return bench_main(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "gdel-bench: error: %s\n", e.what());
+    return 1;
+  }
 }
