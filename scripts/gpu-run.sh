@@ -473,6 +473,20 @@ case "$plan" in
     step gdel3d 120 "$tbin/gpu_gdel3d"
     step hostile 60 "$tbin/gpu_hostile"
     ;;
+  s14c)  # the splaying rounds' insertions into huge stars on the host, against the binary before (s14's,
+          # carried as build/s14prev), same call: grid, sphere, uniform at 10^6; then 10^8 and the GPU tests
+    old=build/s14prev/gdel-bench
+    for v in new old; do
+      g=$gb
+      [ "$v" = old ] && g=$old
+      step "s14c_$v" 100 "$g" --dist grid,sphere,uniform --n 1000000 --methods gdel3d-cuda-dev,auto-cuda-dev \
+        --repeat 3 --json "$jdir/s14c_$v.json"
+    done
+    GDEL_PROFILE=1 bench s14c_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    step gdel3d 120 "$tbin/gpu_gdel3d"
+    step gflip3d 100 "$tbin/gpu_gflip3d"
+    step hostile 60 "$tbin/gpu_hostile"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

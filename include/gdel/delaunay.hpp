@@ -124,6 +124,10 @@ struct Stats {
   // zero volume, on coplanar hull faces) dropped from the output
   std::int64_t repair_failed_vertices = 0, stars_built = 0, stars_flipflop = 0, stars_rebuilt = 0,
                stars_pulled = 0, splay_rounds = 0, splay_insertions = 0, flat_tets_removed = 0;
+  // gdel3d repair on the CUDA backend: stars with huge working sets (over 512 points: a
+  // point on a coplanar hull face) built on the host's cores, and the insertions made
+  // into such stars (over 1 024 triangles) on the host in the splaying rounds
+  std::int64_t stars_built_on_host = 0, host_star_insertions = 0;
   // gstar4d (or Options::initial = grid: its coarse grid): grid side; gstar4d: candidate
   // pairs in the working sets, and whether the exact
   // certificate of its result failed so that gdel3d recomputed it (0 or 1)

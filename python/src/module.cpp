@@ -131,6 +131,8 @@ nb::dict stats_dict(const gdel::Stats& s) {
   d["stars_built"] = s.stars_built;
   d["stars_flipflop"] = s.stars_flipflop;
   d["stars_rebuilt"] = s.stars_rebuilt;
+  d["stars_built_on_host"] = s.stars_built_on_host;
+  d["host_star_insertions"] = s.host_star_insertions;
   d["stars_pulled"] = s.stars_pulled;
   d["splay_rounds"] = s.splay_rounds;
   d["splay_insertions"] = s.splay_insertions;

@@ -43,6 +43,9 @@ std::string Stats::to_string() const {
       << stars_flipflop << " by Flip-Flop, " << stars_rebuilt << " rebuilt), stars pulled " << stars_pulled
       << ", splay rounds " << splay_rounds << ", insertions " << splay_insertions << ", flat tets removed "
       << flat_tets_removed;
+  if (algorithm == "gdel3d" && (stars_built_on_host > 0 || host_star_insertions > 0))
+    s << "\n  repair on the host (huge stars): stars built " << stars_built_on_host << ", insertions "
+      << host_star_insertions;
   if (!verify_summary.empty()) s << "\n  verify: " << verify_summary;
   return s.str();
 }

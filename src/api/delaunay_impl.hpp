@@ -156,6 +156,8 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     st.stars_built = r.stars_built;
     st.stars_flipflop = r.splay.flipflop;
     st.stars_rebuilt = r.splay.rebuilt;
+    st.stars_built_on_host = r.splay.host_built;
+    st.host_star_insertions = r.splay.host_insertions;
     st.stars_pulled = r.splay.stars_pulled;
     st.splay_rounds = r.splay.rounds;
     st.splay_insertions = r.splay.insertions;

@@ -164,6 +164,9 @@ struct SplayStats {
   I64 rounds = 0, insertions = 0, stars_pulled = 0, proofs = 0, dead = 0;
   // seeded stars (gDel3D's failed stars) made convex by Flip-Flop, and rebuilt instead
   I64 flipflop = 0, rebuilt = 0;
+  // huge stars (CUDA backend: Splayer::host_build_min) built on the host, and the
+  // insertions made into huge stars on the host
+  I64 host_built = 0, host_insertions = 0;
   // the critical path of one thread per star: Σ over the build and every round of the most
   // insertions into one star (counted only with GDEL_SPLAY_DEBUG set: it costs a reduction
   // per round), and the most triangles one star held (largest_star())
@@ -401,6 +404,7 @@ class Splayer {
     }
     HostJobs hjobs;
     if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov, lp, sdp);
+    ss_.host_built += static_cast<I64>(huge.size());
     par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
       const I64 s = s0 + j;
       const I64 a = lhp[j], b = lhp[j + 1];
@@ -451,22 +455,19 @@ class Splayer {
     std::vector<U64> keys;
   };
   struct HostJobs {
+    std::vector<HostJob> jobs;
+  };
+  // The points (and weights, and ids) in host memory for the host jobs, copied once per
+  // splayer (they do not change while it runs).
+  struct HostGeo {
     std::vector<double> xyz, w;
     std::vector<std::int64_t> sid;
     flip::Geo g{};
-    std::vector<HostJob> jobs;
+    bool ready = false;
   };
-  template <class T>
-  void get(T* dst, const T* src, std::size_t count) {
-    par::detail::Memory<B>::to_host(ctx_, dst, src, count * sizeof(T));
-  }
-  template <class T>
-  void put(T* dst, const T* src, std::size_t count) {
-    par::detail::Memory<B>::from_host(ctx_, dst, src, count * sizeof(T));
-  }
-  HostJobs host_jobs(const std::vector<I64>& huge, I64 s0, const I64* lhp, const I64* rmp, const vid_t* gvp,
-                     const vid_t* ov, const U64* lp, const std::int32_t* sdp) {
-    HostJobs H;
+  const flip::Geo& host_geo() {
+    HostGeo& H = host_geo_;
+    if (H.ready) return H.g;
     const std::size_t np = static_cast<std::size_t>(g_.inf) + 1;  // n points and K
     H.xyz.resize(3 * np);
     H.sid.resize(np);
@@ -480,6 +481,35 @@ class Splayer {
       get(H.w.data(), g_.w, np);
       H.g.w = H.w.data();
     }
+    H.ready = true;
+    return H.g;
+  }
+  // Runs job(h) for h in [0, n) on the host's threads (at most one per job), the calling
+  // thread included.
+  template <class Job>
+  static void on_host_threads(std::size_t n, Job job) {
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (std::size_t h; (h = next.fetch_add(1)) < n;) job(h);
+    };
+    const std::size_t nthreads = std::min<std::size_t>(n, std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> threads;
+    for (std::size_t t = 1; t < nthreads; ++t) threads.emplace_back(worker);
+    worker();
+    for (std::thread& t : threads) t.join();
+  }
+  template <class T>
+  void get(T* dst, const T* src, std::size_t count) {
+    par::detail::Memory<B>::to_host(ctx_, dst, src, count * sizeof(T));
+  }
+  template <class T>
+  void put(T* dst, const T* src, std::size_t count) {
+    par::detail::Memory<B>::from_host(ctx_, dst, src, count * sizeof(T));
+  }
+  HostJobs host_jobs(const std::vector<I64>& huge, I64 s0, const I64* lhp, const I64* rmp, const vid_t* gvp,
+                     const vid_t* ov, const U64* lp, const std::int32_t* sdp) {
+    HostJobs H;
+    host_geo();
     const StarView sv = view();
     H.jobs.resize(huge.size());
     for (std::size_t h = 0; h < huge.size(); ++h) {
@@ -509,25 +539,16 @@ class Splayer {
     return H;
   }
   void run_host_jobs(HostJobs& H, U64* gp, I64* up, std::int32_t* ffp, I64 ff_cap) {
-    const flip::Geo& hg = H.g;
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
+    const flip::Geo& hg = host_geo_.g;
+    on_host_threads(H.jobs.size(), [&](std::size_t h) {
       std::vector<double> work(geom::kPredicateWork);
-      for (std::size_t h; (h = next.fetch_add(1)) < H.jobs.size();) {
-        HostJob& J = H.jobs[h];
-        I64 gk = 0;
-        J.ff = seeded_build(hg, J.T.data(), J.S.data(), J.cap, J.me, J.keys.data(), J.pts.data(),
-                            static_cast<I64>(J.pts.size()), J.seeded, work.data(), J.gone.data(), gk, J.g1 - J.g0,
-                            &J.err, &J.killer, &J.count, ff_cap);
-        J.used = gk;
-      }
-    };
-    const std::size_t nthreads =
-        std::min<std::size_t>(H.jobs.size(), std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> threads;
-    for (std::size_t t = 1; t < nthreads; ++t) threads.emplace_back(worker);
-    worker();
-    for (std::thread& t : threads) t.join();
+      HostJob& J = H.jobs[h];
+      I64 gk = 0;
+      J.ff = seeded_build(hg, J.T.data(), J.S.data(), J.cap, J.me, J.keys.data(), J.pts.data(),
+                          static_cast<I64>(J.pts.size()), J.seeded, work.data(), J.gone.data(), gk, J.g1 - J.g0,
+                          &J.err, &J.killer, &J.count, ff_cap);
+      J.used = gk;
+    });
     const StarView sv = view();
     for (HostJob& J : H.jobs) {
       put(sv.tri + J.begin, J.T.data(), J.T.size());
@@ -537,6 +558,81 @@ class Splayer {
       if (J.used > 0) put(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used));
       put(up + J.j, &J.used, 1);
       put(ffp + J.j, &J.ff, 1);
+      if (J.err != 0) put(error_.data(), &J.err, 1);
+    }
+  }
+
+  // insert_round's huge stars (indices j of its request groups) on the host: the star's
+  // triangles (all cap slots), count and requests come to host memory before the kernel
+  // for the other stars is launched; run_insert_jobs inserts, one host thread per star,
+  // while that kernel runs, and writes the star, its killer and its gone pairs back.
+  struct InsertJob {
+    I64 j = 0, s = 0, begin = 0, g0 = 0, g1 = 0, used = 0, inserted = 0;
+    std::int32_t cap = 0, count = 0, err = 0;
+    vid_t me = -1, killer = -1;
+    std::vector<U64> req;
+    std::vector<Tri> T;
+    std::vector<std::uint8_t> S;
+    std::vector<U64> gone;
+  };
+  std::vector<InsertJob> insert_jobs(const std::vector<I64>& huge, const Buffer<U64, B>& req,
+                                     const Buffer<I64, B>& heads, I64 nh, const Buffer<I64, B>& room) {
+    host_geo();
+    const StarView sv = view();
+    const I64 n = static_cast<I64>(req.size());
+    std::vector<InsertJob> jobs(huge.size());
+    for (std::size_t h = 0; h < huge.size(); ++h) {
+      InsertJob& J = jobs[h];
+      J.j = huge[h];
+      I64 a = 0, b = n;
+      get(&a, heads.data() + J.j, 1);
+      if (J.j + 1 < nh) get(&b, heads.data() + J.j + 1, 1);
+      J.req.resize(static_cast<std::size_t>(b - a));
+      get(J.req.data(), req.data() + a, J.req.size());
+      J.me = key_target(J.req[0]);
+      std::int32_t s32 = -1;
+      get(&s32, star_of_.data() + J.me, 1);
+      J.s = s32;
+      get(&J.begin, static_cast<const I64*>(sv.begin + J.s), 1);
+      get(&J.cap, static_cast<const std::int32_t*>(sv.cap + J.s), 1);
+      get(&J.count, static_cast<const std::int32_t*>(sv.count + J.s), 1);
+      get(&J.g0, room.data() + J.j, 1);
+      get(&J.g1, room.data() + J.j + 1, 1);
+      J.T.resize(static_cast<std::size_t>(J.cap));
+      J.S.resize(static_cast<std::size_t>(J.cap));
+      get(J.T.data(), static_cast<const Tri*>(sv.tri + J.begin), J.T.size());
+      get(J.S.data(), static_cast<const std::uint8_t*>(sv.state + J.begin), J.S.size());
+      J.gone.resize(static_cast<std::size_t>(std::max<I64>(J.g1 - J.g0, 1)));
+    }
+    return jobs;
+  }
+  void run_insert_jobs(std::vector<InsertJob>& jobs, U64* gp, I64* up) {
+    const flip::Geo& hg = host_geo_.g;
+    on_host_threads(jobs.size(), [&](std::size_t h) {
+      std::vector<double> work(geom::kPredicateWork);
+      InsertJob& J = jobs[h];
+      std::int32_t nonpos = 0;
+      for (std::int32_t q = 0; q < J.count; ++q) nonpos += (J.S[static_cast<std::size_t>(q)] & kTriNonPositive) ? 1 : 0;
+      I64 k = 0;
+      for (const U64 key : J.req) {
+        ++J.inserted;
+        if (insert_recording(hg, J.T.data(), J.S.data(), J.count, J.cap, J.me, key_vertex(key), work.data(),
+                             J.gone.data(), k, J.g1 - J.g0, &J.err, &nonpos) == kStarDead) {
+          J.killer = key_vertex(key);
+          break;
+        }
+      }
+      J.used = k;
+    });
+    const StarView sv = view();
+    for (InsertJob& J : jobs) {
+      ss_.host_insertions += J.inserted;
+      put(sv.tri + J.begin, J.T.data(), J.T.size());
+      put(sv.state + J.begin, J.S.data(), J.S.size());
+      put(sv.count + J.s, &J.count, 1);
+      if (J.killer >= 0) put(sv.killer + J.s, &J.killer, 1);
+      if (J.used > 0) put(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used));
+      put(up + J.j, &J.used, 1);
       if (J.err != 0) put(error_.data(), &J.err, 1);
     }
   }
@@ -864,10 +960,30 @@ class Splayer {
     const StarView sv = view();
     const flip::Geo g = g_;
     std::int32_t* ep = error_.data();
+    // On the CUDA backend the huge stars (more than 2 * host_build_min() triangles: the
+    // coplanar hull faces' stars that build_stars made on the host) take their insertions
+    // on the host's cores too, with the same code, while the kernel serves the others:
+    // on one GPU thread their every degenerate test cost tens of µs (bench/RESULTS.md,
+    // session 14: 0.7 s of the grid's splaying rounds).
+    const I64 host_tri_min = host_build_min() < (I64(1) << 61) ? 2 * host_build_min() : I64(1) << 62;
+    std::vector<InsertJob> ijobs;
+    if (host_tri_min < (I64(1) << 62)) {
+      // (nh + 1, not std::max(nh, 1): nvcc 13.0 crashes, "i_copy_expr_tree", when nh, a
+      // const local initialised by a call with an extended lambda, binds to a reference)
+      Buffer<I64, B> hj(ctx_, nh + 1);
+      std::size_t nhuge = par::select_indices(ctx_, nh, hj.data(), [=] GDEL_HD(I64 j) {
+        return cnt[so[key_target(rp[hp[j]])]] > host_tri_min;
+      });
+      if (nhuge > 0) {
+        hj.resize(nhuge);
+        ijobs = insert_jobs(hj.to_host(), req, heads, static_cast<I64>(nh), room);
+      }
+    }
     par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
       const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
       const vid_t sv_vert = key_target(rp[a]);
       const std::int32_t s = so[sv_vert];
+      if (cnt[s] > host_tri_min) return;  // on the host (insert_jobs)
       Tri* T = sv.tri + sv.begin[s];
       std::uint8_t* S = sv.state + sv.begin[s];
       std::int32_t count = sv.count[s];
@@ -884,6 +1000,7 @@ class Splayer {
       sv.count[s] = count;
       up[j] = k - rmp[j];
     });
+    if (!ijobs.empty()) run_insert_jobs(ijobs, gp, up);  // while the kernel runs; then writes back
     throw_if_error("insertion");
     gone = pack_pairs(gp, rmp, up, static_cast<I64>(nh));
     certify_deaths();
@@ -1158,6 +1275,7 @@ class Splayer {
   I64 nst_ = 0;
   I64 slots_ = 0;
   std::function<void(const Buffer<vid_t, B>&)> pull_;
+  HostGeo host_geo_;  // the points on the host, for the huge stars' host jobs
   // GDEL_SPLAY_DEBUG=1: a line per round; 2: also an O(k^2) convexity check of every star
   int debug_ = std::getenv("GDEL_SPLAY_DEBUG") ? std::atoi(std::getenv("GDEL_SPLAY_DEBUG")) : 0;
   SplayStats ss_;

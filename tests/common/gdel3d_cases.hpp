@@ -65,9 +65,11 @@ inline void gdel3d_scale_cases(Backend b, std::initializer_list<std::size_t> siz
     }
 }
 
-// The repair's host build of huge stars (Splayer::build_on_host; on the CUDA backend for
-// working sets over 512 points) gives the same triangulation as the in-kernel build: forced
-// here for every star over 8 points (GDEL_HOST_STAR_MIN), on grid and sphere points.
+// The repair's host work on huge stars (on the CUDA backend: building the stars whose
+// working sets exceed 512 points, and the splaying rounds' insertions into stars of over
+// 1 024 triangles) gives the same triangulation as the in-kernel work: forced here for
+// every star over 8 points and every insertion into a star of over 16 triangles
+// (GDEL_HOST_STAR_MIN), on grid and sphere points; both host paths must have run.
 inline void gdel3d_host_star_case(Backend b) {
   for (auto d : {gen::Distribution::Grid, gen::Distribution::Sphere}) {
     SCOPED_TRACE(std::string(gen::to_string(d)));
@@ -78,6 +80,8 @@ inline void gdel3d_host_star_case(Backend b) {
     ::setenv("GDEL_HOST_STAR_MIN", "8", 1);
     Triangulation host = delaunay(pts, o);
     ::unsetenv("GDEL_HOST_STAR_MIN");
+    EXPECT_GT(host.stats.stars_built_on_host, 0);
+    EXPECT_GT(host.stats.host_star_insertions, 0);
     expect_exact_delaunay(pts, host, b);
     EXPECT_EQ(host.tets, base.tets);
     EXPECT_EQ(host.neighbors, base.neighbors);
