@@ -442,21 +442,33 @@ class Splayer {
     if (const char* e = std::getenv("GDEL_HOST_STAR_MIN")) return std::max<I64>(4, std::atoll(e));
     return B::is_device ? kHostBuildMin : I64(1) << 62;
   }
-  struct HostJob {
-    I64 j = 0, s = 0, a = 0, b = 0, g0 = 0, g1 = 0, begin = 0;
+  // A star worked on the host (its group j, star s, slots [begin, begin + cap), room for
+  // gone pairs [g0, g1) of the round's list, used of it), and its write-back.
+  struct HostStar {
+    I64 j = 0, s = 0, begin = 0, g0 = 0, g1 = 0, used = 0;
     std::int32_t cap = 0, count = 0, err = 0;
     vid_t me = -1, killer = -1;
-    std::vector<vid_t> pts;
     std::vector<Tri> T;
     std::vector<std::uint8_t> S;
     std::vector<U64> gone;
-    I64 used = 0;
+  };
+  void write_back(const HostStar& J, U64* gp, I64* up) {
+    const StarView sv = view();
+    put(sv.tri + J.begin, J.T.data(), J.T.size());
+    put(sv.state + J.begin, J.S.data(), J.S.size());
+    put(sv.count + J.s, &J.count, 1);
+    if (J.killer >= 0) put(sv.killer + J.s, &J.killer, 1);
+    if (J.used > 0) put(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used));
+    put(up + J.j, &J.used, 1);
+    if (J.err != 0) put(error_.data(), &J.err, 1);
+  }
+  struct HostJob : HostStar {
+    I64 a = 0, b = 0;
+    std::vector<vid_t> pts;
     std::int32_t seeded = -1, ff = 0;
     std::vector<U64> keys;
   };
-  struct HostJobs {
-    std::vector<HostJob> jobs;
-  };
+  using HostJobs = std::vector<HostJob>;
   // The points (and weights, and ids) in host memory for the host jobs, copied once per
   // splayer (they do not change while it runs).
   struct HostGeo {
@@ -508,12 +520,11 @@ class Splayer {
   }
   HostJobs host_jobs(const std::vector<I64>& huge, I64 s0, const I64* lhp, const I64* rmp, const vid_t* gvp,
                      const vid_t* ov, const U64* lp, const std::int32_t* sdp) {
-    HostJobs H;
+    HostJobs H(huge.size());
     host_geo();
     const StarView sv = view();
-    H.jobs.resize(huge.size());
     for (std::size_t h = 0; h < huge.size(); ++h) {
-      HostJob& J = H.jobs[h];
+      HostJob& J = H[h];
       J.j = huge[h];
       J.s = s0 + J.j;
       get(&J.a, lhp + J.j, 1);
@@ -540,25 +551,18 @@ class Splayer {
   }
   void run_host_jobs(HostJobs& H, U64* gp, I64* up, std::int32_t* ffp, I64 ff_cap) {
     const flip::Geo& hg = host_geo_.g;
-    on_host_threads(H.jobs.size(), [&](std::size_t h) {
+    on_host_threads(H.size(), [&](std::size_t h) {
       std::vector<double> work(geom::kPredicateWork);
-      HostJob& J = H.jobs[h];
+      HostJob& J = H[h];
       I64 gk = 0;
       J.ff = seeded_build(hg, J.T.data(), J.S.data(), J.cap, J.me, J.keys.data(), J.pts.data(),
                           static_cast<I64>(J.pts.size()), J.seeded, work.data(), J.gone.data(), gk, J.g1 - J.g0,
                           &J.err, &J.killer, &J.count, ff_cap);
       J.used = gk;
     });
-    const StarView sv = view();
-    for (HostJob& J : H.jobs) {
-      put(sv.tri + J.begin, J.T.data(), J.T.size());
-      put(sv.state + J.begin, J.S.data(), J.S.size());
-      put(sv.count + J.s, &J.count, 1);
-      if (J.killer >= 0) put(sv.killer + J.s, &J.killer, 1);
-      if (J.used > 0) put(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used));
-      put(up + J.j, &J.used, 1);
+    for (HostJob& J : H) {
+      write_back(J, gp, up);
       put(ffp + J.j, &J.ff, 1);
-      if (J.err != 0) put(error_.data(), &J.err, 1);
     }
   }
 
@@ -566,14 +570,9 @@ class Splayer {
   // triangles (all cap slots), count and requests come to host memory before the kernel
   // for the other stars is launched; run_insert_jobs inserts, one host thread per star,
   // while that kernel runs, and writes the star, its killer and its gone pairs back.
-  struct InsertJob {
-    I64 j = 0, s = 0, begin = 0, g0 = 0, g1 = 0, used = 0, inserted = 0;
-    std::int32_t cap = 0, count = 0, err = 0;
-    vid_t me = -1, killer = -1;
+  struct InsertJob : HostStar {
+    I64 inserted = 0;
     std::vector<U64> req;
-    std::vector<Tri> T;
-    std::vector<std::uint8_t> S;
-    std::vector<U64> gone;
   };
   std::vector<InsertJob> insert_jobs(const std::vector<I64>& huge, const Buffer<U64, B>& req,
                                      const Buffer<I64, B>& heads, I64 nh, const Buffer<I64, B>& room) {
@@ -624,16 +623,9 @@ class Splayer {
       }
       J.used = k;
     });
-    const StarView sv = view();
     for (InsertJob& J : jobs) {
       ss_.host_insertions += J.inserted;
-      put(sv.tri + J.begin, J.T.data(), J.T.size());
-      put(sv.state + J.begin, J.S.data(), J.S.size());
-      put(sv.count + J.s, &J.count, 1);
-      if (J.killer >= 0) put(sv.killer + J.s, &J.killer, 1);
-      if (J.used > 0) put(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used));
-      put(up + J.j, &J.used, 1);
-      if (J.err != 0) put(error_.data(), &J.err, 1);
+      write_back(J, gp, up);
     }
   }
 
