@@ -487,6 +487,10 @@ case "$plan" in
     step gflip3d 100 "$tbin/gpu_gflip3d"
     step hostile 60 "$tbin/gpu_hostile"
     ;;
+  s14d)  # after the host jobs' refactor (one HostStar record and write-back): grid and uniform at 10^6, gpu_gdel3d
+    bench s14d 60 --dist grid,uniform --n 1000000 --methods gdel3d-cuda-dev,auto-cuda-dev --repeat 3
+    step gdel3d 120 "$tbin/gpu_gdel3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
