@@ -467,12 +467,6 @@ case "$plan" in
         --methods gdel3d-cuda-dev,auto-cuda-dev --repeat 1 --json "$jdir/s14_gen_$pool.json"
     done
     ;;
-  s14b)  # the same binaries: 10^8 uniform (the pool keeps freed memory: does it still fit?), then the GPU tests
-    GDEL_PROFILE=1 bench s14b_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
-    step gflip3d 100 "$tbin/gpu_gflip3d"
-    step gdel3d 120 "$tbin/gpu_gdel3d"
-    step hostile 60 "$tbin/gpu_hostile"
-    ;;
   s14c)  # the splaying rounds' insertions into huge stars on the host, against the binary before (s14's,
           # carried as build/s14prev), same call: grid, sphere, uniform at 10^6; then 10^8 and the GPU tests
     old=build/s14prev/gdel-bench
