@@ -76,6 +76,14 @@ struct Options {
   // gFlip3D: re-order tets by smallest vertex id every second insertion round, for
   // memory locality (measured without gain on an H200 at 10^6..10^7 points; a study knob).
   bool reorder_tets = false;
+  // CPU backend: run gFlip3D in the thesis's parallel rounds, as on the GPU. Default
+  // (false): one point per round (docs/gflip3d.md): each point located by a walk, split
+  // in, and flipped to Delaunay before the next, which leaves the exact Delaunay
+  // triangulation, so gdel3d has nothing to repair. That is several times faster on a few
+  // cores; the rounds remain for study and comparison with the GPU. The rounds are used
+  // anyway when an option above asks for them (terminal, non-optimal flips, independent
+  // splits, tet reordering, an insertion rule other than circumcenter, initial = grid).
+  bool cpu_rounds = false;
   // Sort output tets (each rotated to start at its smallest vertex, list sorted) so
   // that the arrays are bitwise identical across runs and backends.
   bool canonical_order = false;
@@ -107,7 +115,7 @@ struct Stats {
   std::vector<std::pair<std::string, double>> stages;  // seconds per stage, in order
   std::int64_t points = 0;          // input points
   std::int64_t distinct_points = 0; // after removing exact duplicates
-  std::int64_t rounds = 0;          // insertion rounds
+  std::int64_t rounds = 0;          // insertion rounds (one point per round: the points inserted)
   std::int64_t flip_iterations = 0; // parallel flipping iterations
   std::int64_t flips23 = 0, flips32 = 0;
   std::int64_t exact_evaluations = 0;  // items decided by the exact (non-filter) pass
@@ -128,6 +136,9 @@ struct Stats {
   // point on a coplanar hull face) built on the host's cores, and the insertions made
   // into such stars (over 1 024 triangles) on the host in the splaying rounds
   std::int64_t stars_built_on_host = 0, host_star_insertions = 0;
+  // CPU backend, one point per round (Options::cpu_rounds = false): insertions undone
+  // after meeting another thread's tets, then redone by one thread after their round
+  std::int64_t points_deferred = 0;
   // gstar4d (or Options::initial = grid: its coarse grid): grid side; gstar4d: candidate
   // pairs in the working sets, and whether the exact
   // certificate of its result failed so that gdel3d recomputed it (0 or 1)

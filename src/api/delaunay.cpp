@@ -46,6 +46,7 @@ std::string Stats::to_string() const {
   if (algorithm == "gdel3d" && (stars_built_on_host > 0 || host_star_insertions > 0))
     s << "\n  repair on the host (huge stars): stars built " << stars_built_on_host << ", insertions "
       << host_star_insertions;
+  if (points_deferred > 0) s << "\n  one point per round: insertions deferred between threads " << points_deferred;
   if (!verify_summary.empty()) s << "\n  verify: " << verify_summary;
   return s.str();
 }

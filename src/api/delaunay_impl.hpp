@@ -63,6 +63,14 @@ void report_profile(Context<B>& ctx, const Stats& st) {
                static_cast<long long>(st.points), par::format_profile(ctx.profile_report()).c_str());
 }
 
+// FlipConfig::sequential: on host backends, unless Options ask for the parallel rounds.
+template <class B>
+bool one_point_per_round(const Options& opt) {
+  return !B::is_device && !opt.cpu_rounds && !opt.terminal_flipping && !opt.nonoptimal_flips &&
+         !opt.independent_splits && !opt.reorder_tets && opt.insertion == InsertionRule::Circumcenter &&
+         opt.initial == Initial::Default;
+}
+
 template <class B, class Out>
 Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, const Options& opt, Out& sink) {
   using I64 = std::int64_t;
@@ -125,16 +133,20 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   }
   cfg.reorder_tets = opt.reorder_tets;
   cfg.independent_splits = opt.independent_splits;
+  cfg.sequential = one_point_per_round<B>(opt);
   flip::GFlip3D<B> alg(ctx, P, sid, m, cfg, st);
   if (opt.initial == Initial::grid) grid::grid_initial(ctx, alg, P, sid, m, lo, hi, opt, st);  // else: first tet
   alg.run();
   alg.release_work();
+  const bool sequential = alg.ran_one_point_per_round();
 
   // --- output ----------------------------------------------------------------------------
   t0 = std::chrono::steady_clock::now();
   auto& mesh = alg.mesh();
-  mesh.compact(/*shrink=*/true);
-  par::mark(ctx, "output: compact mesh");
+  if (!sequential) {  // one point per round wrote the mesh back compacted
+    mesh.compact(/*shrink=*/true);
+    par::mark(ctx, "output: compact mesh");
+  }
   const I64 nt = mesh.size();
   mesh::MeshView mv = mesh.view();
   const vid_t inf = alg.infinite();
@@ -142,9 +154,13 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   if (exact) {
     auto t1 = std::chrono::steady_clock::now();
     splay::GDel3D<B> rep(ctx, mesh, g, m);
-    rep.repair();
-    par::mark(ctx, "gdel3d repair");
-    st.stages.push_back({"gdel3d repair (star splaying)", since(t1)});
+    // One point per round leaves the exact Delaunay triangulation (flip/sequential.hpp):
+    // nothing to repair; the extract still drops flat tets on coplanar hull faces.
+    if (!sequential) {
+      rep.repair();
+      par::mark(ctx, "gdel3d repair");
+      st.stages.push_back({"gdel3d repair (star splaying)", since(t1)});
+    }
     t1 = std::chrono::steady_clock::now();
     Buffer<vid_t, B> tv(ctx);
     Buffer<std::int32_t, B> tn(ctx);

@@ -17,6 +17,7 @@
 
 #include "flip/flip_kernels.hpp"
 #include "flip/local_delaunay.hpp"
+#include "flip/sequential.hpp"
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "parallel/exact_batch.hpp"
@@ -30,6 +31,12 @@ using par::Context;
 struct FlipConfig {
   InsertionRule rule = InsertionRule::Circumcenter;
   bool terminal = false;
+  // One point per round (flip/sequential.hpp), host backends only: the default on the
+  // CPU backend (Options::cpu_rounds = false), where the thesis's parallel rounds cost
+  // several times CGAL's sequential insertion; leaves the exact Delaunay triangulation.
+  // Needs the default start (not Options::initial = grid); the other round options
+  // (terminal, independent splits, non-optimal flips, tet reordering) do not apply.
+  bool sequential = false;
   std::int64_t max_flip_iterations = 1 << 20;  // per flip loop; a safety net, never reached in practice
   bool tail_rule = std::getenv("GDEL_FLIP_EVERY_ROUND") == nullptr;  // study knob (ALGORITHMS.md §3.1)
   // Independent splits (Options::independent_splits): in a round that flips, a tet that
@@ -105,10 +112,16 @@ class GFlip3D {
     tie_mode_ = tie_mode_from_env();
     auto t0 = std::chrono::steady_clock::now();
     const bool preset = mesh_.size() > 0;  // init_from() gave the start (Options::initial = grid)
-    if (!preset) init();
+    const bool sequential = cfg_.sequential && !preset && sequential_fits();
+    if (!preset) init(/*locate=*/!sequential);
     par::mark(ctx_, "first tetrahedron + location");
     check_mesh("after init");
-    if (!preset) stage("initial tetrahedron + location", t0);
+    if (!preset) stage(sequential ? "initial tetrahedron" : "initial tetrahedron + location", t0);
+    if (sequential) {
+      run_sequential();
+      sequential_ran_ = true;
+      return;
+    }
     bool flipping = !cfg_.terminal;
     bool flipped_all_along = flipping;
     std::int64_t remaining = static_cast<std::int64_t>(todo_.size());
@@ -176,6 +189,38 @@ class GFlip3D {
     }
   }
 
+  // FlipConfig::sequential applies: a host backend and at most 2^30 tets expected
+  // (SequentialInsertion::fits); otherwise the rounds run.
+  bool sequential_fits() const {
+    if constexpr (B::is_device) return false;
+    else return SequentialInsertion<B>::fits(n_);
+  }
+  // FlipConfig::sequential: the points todo_ inserted one per round.
+  void run_sequential() {
+    if constexpr (!B::is_device) {
+      auto t0 = std::chrono::steady_clock::now();
+      typename SequentialInsertion<B>::Knobs k;
+      if (const char* e = std::getenv("GDEL_CPU_THREADS")) k.threads = static_cast<unsigned>(std::max(0, std::atoi(e)));
+      if (const char* e = std::getenv("GDEL_CPU_PARALLEL_MIN")) k.parallel_min = std::max(1LL, std::atoll(e));
+      if (const char* e = std::getenv("GDEL_CPU_FORCE_CONFLICT")) k.force_conflict = std::max(0LL, std::atoll(e));
+      SequentialInsertion<B> seq(mesh_, geo(), initial_slots(), k);
+      seq.run(todo_.data(), static_cast<std::int64_t>(todo_.size()));
+      const SequentialCounts& c = seq.counts();
+      st_.rounds += c.inserted;
+      st_.flips23 += c.flips23;
+      st_.flips32 += c.flips32;
+      st_.exact_evaluations += c.exact;
+      st_.points_deferred += c.deferred;
+      todo_.release();
+      par::mark(ctx_, "insert + flip, one point per round");
+      check_mesh("after one-point-per-round insertion");
+      stage("insertion + flipping, one point per round (CPU)", t0);
+    }
+  }
+
+  // run() inserted one point per round (FlipConfig::sequential, when it applies): the
+  // mesh is the exact Delaunay triangulation, compacted.
+  bool ran_one_point_per_round() const { return sequential_ran_; }
   mesh::TetMesh<B>& mesh() { return mesh_; }
   // Frees everything but the mesh (per-point and per-tet work arrays, flip log): for
   // after run(), so that the repair and the output do not sit beside them.
@@ -286,10 +331,12 @@ class GFlip3D {
     return m > 0 ? 1.0 / m : 1.0;
   }
 
-  void init() {
+  // locate = false: the 5 first tets only, todo_ = every other point, no vert_tet_ (for
+  // one point per round, whose walks locate each point when it comes).
+  void init(bool locate = true) {
     vid_t t0[4];
     first_tetrahedron(t0);
-    build_initial(t0);
+    build_initial(t0, locate);
   }
 
   // The first tetrahedron t0 (positive; DegenerateInput when every point is coplanar)
@@ -350,7 +397,7 @@ class GFlip3D {
     set_kernel_point(t0);
   }
 
-  void build_initial(const vid_t* t0) {
+  void build_initial(const vid_t* t0, bool locate_points = true) {
     // 5 tets: t0 and, for each face i of t0, (face reversed, ∞).
     const vid_t inf = static_cast<vid_t>(n_);
     std::vector<mesh::Tet> tets(5);
@@ -373,7 +420,7 @@ class GFlip3D {
                 shared += tets[t].v[face_vertex(i, k)] == tets[u].v[face_vertex(j, l)];
             if (shared == 3) opp[4 * t + i] = pack_facet(u, j);
           }
-    mesh_.reserve(initial_slots());  // fresh slots are dead
+    mesh_.reserve(locate_points ? initial_slots() : 5);  // fresh slots are dead
     par::detail::Memory<B>::from_host(ctx_, mesh_.tets().data(), tets.data(), 5 * sizeof(mesh::Tet));
     {
       Buffer<fid_t, B> ob(ctx_);
@@ -385,6 +432,16 @@ class GFlip3D {
     mesh_.set_size(5);
     grow_aux();
 
+    if (!locate_points) {
+      const vid_t o0 = t0[0], o1 = t0[1], o2 = t0[2], o3 = t0[3];
+      Buffer<vid_t, B> rest(ctx_, static_cast<std::size_t>(n_));
+      const std::size_t m = par::select_indices(ctx_, static_cast<std::size_t>(n_), rest.data(), [=] GDEL_HD(vid_t q) {
+        return q != o0 && q != o1 && q != o2 && q != o3;
+      });
+      rest.resize(m);
+      todo_ = std::move(rest);
+      return;
+    }
     // Locate every other point: the cones from K over t0's faces partition space;
     // in cone i a point lies in t0 or in infinite tet 1+i.
     vert_tet_.resize(static_cast<std::size_t>(n_));
@@ -1285,6 +1342,7 @@ class GFlip3D {
   std::vector<std::int64_t> log_iters_{0};
   double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0, t_reorder_ = 0;
   bool debug_ = false;
+  bool sequential_ran_ = false;
   int tie_mode_ = kDefaultTieMode;  // tie_break's mode
   bool trace_ = false;  // GDEL_FLIP_TRACE=1: one line per InsFlip round on stderr
   double inv_scale_ = 1.0;

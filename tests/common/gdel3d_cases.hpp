@@ -44,6 +44,13 @@ inline void gdel3d_generator_cases(Backend b, std::size_t n) {
     Triangulation t2 = delaunay(pts, o);
     EXPECT_EQ(t.tets, t2.tets);
     EXPECT_EQ(t.neighbors, t2.neighbors);
+    // the parallel rounds + repair give the same triangulation (on the CPU backend the
+    // default inserts one point per round, with no repair; the GPU ignores cpu_rounds)
+    o.cpu_rounds = true;
+    Triangulation r = delaunay(pts, o);
+    expect_exact_delaunay(pts, r, b);
+    EXPECT_EQ(r.tets, t.tets);
+    EXPECT_EQ(r.neighbors, t.neighbors);
   }
 }
 
@@ -76,6 +83,7 @@ inline void gdel3d_host_star_case(Backend b) {
     auto pts = gen::generate(d, d == gen::Distribution::Grid ? 100000 : 10000, 31);
     Options o;
     o.backend = b;
+    o.cpu_rounds = true;  // the rounds leave stars to repair, also on the CPU
     Triangulation base = delaunay(pts, o);
     ::setenv("GDEL_HOST_STAR_MIN", "8", 1);
     Triangulation host = delaunay(pts, o);
@@ -85,6 +93,46 @@ inline void gdel3d_host_star_case(Backend b) {
     expect_exact_delaunay(pts, host, b);
     EXPECT_EQ(host.tets, base.tets);
     EXPECT_EQ(host.neighbors, base.neighbors);
+  }
+}
+
+// One point per round (the CPU backend's default, flip/sequential.hpp) on several
+// threads: each insertion is a transaction that is undone and deferred when it meets
+// another thread's tets. Forced here with 4 threads, every round of over 64 points run
+// in parallel, and a conflict forced at every 50th tet taken (GDEL_CPU_*): insertions
+// must have been deferred, and the triangulation must be the one of a single thread and
+// of the parallel rounds + repair, exactly Delaunay. Uniform, grid (exact ties) and
+// sphere (cospherical) points.
+inline void gdel3d_threads_case(Backend b) {
+  for (auto d : {gen::Distribution::Uniform, gen::Distribution::Grid, gen::Distribution::Sphere}) {
+    SCOPED_TRACE(std::string(gen::to_string(d)));
+    auto pts = gen::generate(d, 30000, 17);
+    Options o;
+    o.backend = b;
+    o.canonical_order = true;
+    ::setenv("GDEL_CPU_THREADS", "1", 1);
+    const Triangulation one = delaunay(pts, o);
+    ::setenv("GDEL_CPU_THREADS", "4", 1);
+    ::setenv("GDEL_CPU_PARALLEL_MIN", "64", 1);
+    ::setenv("GDEL_CPU_FORCE_CONFLICT", "50", 1);
+    const Triangulation four = delaunay(pts, o);
+    ::unsetenv("GDEL_CPU_FORCE_CONFLICT");
+    const Triangulation natural = delaunay(pts, o);  // conflicts only where threads meet
+    ::unsetenv("GDEL_CPU_PARALLEL_MIN");
+    ::unsetenv("GDEL_CPU_THREADS");
+    o.cpu_rounds = true;
+    const Triangulation rounds = delaunay(pts, o);
+    SCOPED_TRACE(four.stats.to_string());
+    EXPECT_EQ(one.stats.points_deferred, 0);
+    EXPECT_GT(four.stats.points_deferred, 0);
+    EXPECT_EQ(four.stats.rounds, one.stats.rounds);  // every point inserted once
+    expect_exact_delaunay(pts, four, b);
+    expect_exact_delaunay(pts, natural, b);
+    EXPECT_EQ(four.tets, one.tets);
+    EXPECT_EQ(four.neighbors, one.neighbors);
+    EXPECT_EQ(natural.tets, one.tets);
+    EXPECT_EQ(rounds.tets, one.tets);
+    EXPECT_EQ(rounds.neighbors, one.neighbors);
   }
 }
 
@@ -101,6 +149,7 @@ inline void gdel3d_flipflop_case(Backend b) {
     Options o;
     o.backend = b;
     o.canonical_order = true;  // the stars' triangles come in a different order
+    o.cpu_rounds = true;       // the rounds leave stars to repair, also on the CPU
     Triangulation ff = delaunay(pts, o);
     EXPECT_GT(ff.stats.stars_flipflop, 0);
     EXPECT_EQ(ff.stats.stars_flipflop + ff.stats.stars_rebuilt, ff.stats.stars_built);

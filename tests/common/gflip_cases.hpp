@@ -68,6 +68,15 @@ inline void gflip_generator_cases(Backend b, std::size_t n) {
     Options o;
     o.algorithm = Algorithm::gflip3d;
     o.backend = b;
+    // one point per round (the CPU backend's default; the GPU ignores it): exact
+    Triangulation t1 = delaunay(pts, o);
+    expect_flip_output_valid(pts, t1, b);
+    if (b == Backend::Cpu) {  // it leaves no facet to repair
+      EXPECT_EQ(verify(pts, t1.tets, {}, b).non_delaunay_facets, 0);
+      EXPECT_TRUE(t1.failed_vertices.empty());
+    }
+    // the parallel rounds
+    o.cpu_rounds = true;
     Triangulation t = delaunay(pts, o);
     expect_flip_output_valid(pts, t, b);
     EXPECT_GT(t.stats.rounds, 0);
@@ -140,6 +149,7 @@ inline void gflip_independent_splits_cases(Backend b) {
     Options o;
     o.algorithm = Algorithm::gflip3d;
     o.backend = b;
+    o.cpu_rounds = true;  // the original rule of the rounds, also on the CPU
     Triangulation all = delaunay(pts, o);
     o.independent_splits = true;
     Triangulation ind = delaunay(pts, o);
@@ -171,6 +181,7 @@ inline void for_flip_study_inputs(Backend b, std::size_t n, std::uint64_t seed, 
     Options o;
     o.backend = b;
     o.algorithm = Algorithm::gflip3d;
+    o.cpu_rounds = true;  // the rounds' machinery, also on the CPU
     body(pts, o);
   }
 }

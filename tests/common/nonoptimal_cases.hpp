@@ -15,6 +15,7 @@ inline Options nonoptimal_options(Backend b, Algorithm a, bool terminal, bool no
   o.terminal_flipping = terminal;
   o.nonoptimal_flips = nonoptimal;
   o.canonical_order = true;
+  o.cpu_rounds = true;  // the rounds, also on the CPU (without non-optimal flips too)
   return o;
 }
 

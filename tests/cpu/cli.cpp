@@ -217,6 +217,15 @@ TEST_F(CliTest, NpyInputExampleInputAndStats) {
   EXPECT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.out.find("1000 points ->"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("gflip3d"), std::string::npos) << r.out;
+  // the CPU backend inserts one point per round unless --cpu-rounds asks for the rounds
+  r = gdel({"delaunay", "--example", "uniform:2e4", "-o", "c.vtu", "--device", "cpu", "--stats", "--check"});
+  EXPECT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("one point per round"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("gdel3d repair"), std::string::npos) << r.out;
+  r = gdel({"delaunay", "--example", "uniform:2e4", "-o", "d.vtu", "--device", "cpu", "--stats", "--check", "--cpu-rounds"});
+  EXPECT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(r.out.find("one point per round"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("gdel3d repair"), std::string::npos) << r.out;
 }
 
 TEST_F(CliTest, GenerateEveryPointFormat) {

@@ -16,3 +16,4 @@ TEST(GDel3DCpu, LargerSphereAndGrid) {
 TEST(GDel3DCpu, AllGeneratorsAtScale) { gdel::test::gdel3d_scale_cases(gdel::Backend::Cpu, {10000, 100000, 1000000}); }
 TEST(GDel3DCpu, HostBuiltStarsSameResult) { gdel::test::gdel3d_host_star_case(gdel::Backend::Cpu); }
 TEST(GDel3DCpu, FlipFlopSameAsRebuild) { gdel::test::gdel3d_flipflop_case(gdel::Backend::Cpu); }
+TEST(GDel3DCpu, OnePointPerRoundOnThreads) { gdel::test::gdel3d_threads_case(gdel::Backend::Cpu); }

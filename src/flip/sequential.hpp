@@ -1,0 +1,600 @@
+// gFlip3D with one point per round: the CPU backend's default insertion (FlipConfig::
+// sequential; docs/gflip3d.md "One point per round on the CPU").
+//
+// The thesis inserts thousands of points per round so that a GPU has work for all its
+// threads; every round then re-proposes flips over the whole active set, and the flips
+// of different points block each other, which leaves facets stuck for the repair. On a
+// few CPU cores those rounds cost several times CGAL's sequential insertion (bench/
+// RESULTS.md, session 9). With one point per round the same split and flips become the
+// classical flip-based incremental algorithm (Joe 1991; Edelsbrunner-Shah 1996 for the
+// lifted form): the point is located by a walk from the last tet made, its tet is split
+// 1-4, and the faces opposite it are flipped (2-3 or 3-2, the same face_flip decision as
+// gFlip3D's) until every one is locally Delaunay. A face whose flip is blocked is left
+// alone: the theorem guarantees that the others' flips remove it. Inserted into a
+// Delaunay triangulation this way, every point leaves a Delaunay triangulation, so the
+// result is the exact Delaunay triangulation of the (symbolically perturbed) points with
+// no facet left for gDel3D's repair. Every decision is an exact predicate (filter, then
+// exact arithmetic + SoS) of flip::Geo, the same as gFlip3D's and the repair's.
+//
+// Order: BRIO (Amenta-Choi-Rote): point q belongs to round ctz(hash(q)) (half the points
+// in round 0, a quarter in round 1, ...), rounds inserted from the highest down, each in
+// the points' Hilbert order (internal ids), so consecutive points are near each other
+// and the walks are short, and the randomisation bounds the expected work.
+//
+// Host threads. A large round is cut into as many contiguous pieces of the curve as there
+// are threads (spatially compact regions); each thread inserts its piece's points one at
+// a time, as above, while the others do theirs. A point's insertion is a transaction: the
+// thread takes every tet it reads or writes (an owner byte per tet, compare-and-swap),
+// logs each tet before its first write, and releases them when the point is in. Finding
+// a tet taken by another thread (only near the pieces' borders), it restores the logged
+// tets and defers the point; the deferred points are inserted after the round by one
+// thread. Each insertion is thus atomic with respect to the others, so the result is the
+// one a sequential insertion in some order gives: the unique Delaunay triangulation of
+// the perturbed points, whatever the threads' timing (only the tets' slots differ from
+// run to run; Options::canonical_order fixes the output order).
+//
+// Host only: the CPU backend's buffers are host memory (a simplification of the thesis's
+// parallel rounds for few cores: the rounds stay available, FlipConfig::sequential =
+// false, Options::cpu_rounds). While it runs, the tets live in one 32-byte record each
+// (4 vertices, 4 packed neighbour facets t << 2 | face): a tet and its adjacency in one
+// cache line instead of the mesh's five arrays (bench/RESULTS.md, session 15); the mesh is
+// written back, compacted, at the end.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "flip/flip_kernels.hpp"
+#include "gdel/errors.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace gdel::flip {
+
+struct SequentialCounts {
+  std::int64_t inserted = 0, flips23 = 0, flips32 = 0, exact = 0, walk_steps = 0, deferred = 0;
+};
+
+template <class B>
+class SequentialInsertion {
+  static_assert(!B::is_device, "one point per round runs on host memory");
+
+ public:
+  // Records hold a tet id in 30 bits (with its face in 2): at most 2^30 tets, about
+  // 1.5·10^8 points, far more than a run on host cores takes; fits() says whether n do.
+  static bool fits(std::int64_t n) { return 7 * n + n / 4 + 64 < (std::int64_t(1) << 30); }
+
+  // Study and test knobs (environment, read by GFlip3D::run_sequential): threads
+  // (GDEL_CPU_THREADS; 0: the hardware's), the least round run on several threads
+  // (GDEL_CPU_PARALLEL_MIN), and a conflict forced at every k-th tet taken in a parallel
+  // round (GDEL_CPU_FORCE_CONFLICT; 0: none), which exercises the undo.
+  struct Knobs {
+    unsigned threads = 0;
+    std::int64_t parallel_min = 1 << 12;
+    std::int64_t force_conflict = 0;
+  };
+
+  SequentialInsertion(mesh::TetMesh<B>& mesh, const Geo& g, std::int64_t reserve, Knobs k = {})
+      : mesh_(mesh), g_(g), cells_(mesh.context()), knobs_(k) {
+    const std::int64_t n0 = mesh.size();
+    grow(std::max(reserve, n0 + 64));
+    hwm_ = n0;
+    const mesh::MeshView mv = mesh.view();
+    threads_ = std::min(64u, k.threads ? k.threads : std::max(1u, std::thread::hardware_concurrency()));
+    workers_.reserve(threads_);
+    for (unsigned w = 0; w < threads_; ++w) workers_.emplace_back(*this, static_cast<std::uint8_t>(w + 1));
+    for (std::int64_t t = 0; t < n0; ++t) {
+      Cell& c = cells_.data()[t];
+      const bool alive = mv.alive(static_cast<tid_t>(t));
+      for (int i = 0; i < 4; ++i) {
+        c.v[i] = alive ? mv.tet[t].v[i] : kNoVertex;
+        const tid_t u = mv.opp_t[4 * t + i];
+        c.n[i] = !alive || u < 0 ? -1 : (u << 2 | mv.opp_f[4 * t + i]);
+      }
+      if (!alive) workers_[0].free_.push_back(static_cast<tid_t>(t));
+    }
+  }
+
+  // Inserts the points todo[0..n) (internal ids, none a vertex yet) in BRIO order, then
+  // writes the tets back to the mesh (compacted).
+  void run(const vid_t* todo, std::int64_t n) {
+    std::vector<std::int64_t> rounds;
+    const std::vector<vid_t> order = brio_order(todo, n, rounds);
+    Worker& w0 = workers_[0];
+    w0.begin(false);
+    w0.newest_ = 0;
+    while (w0.newest_ < hwm_ && cells_.data()[w0.newest_].v[0] == kNoVertex) ++w0.newest_;
+    for (std::size_t r = 0; r + 1 < rounds.size(); ++r) {
+      const std::int64_t s = rounds[r], e = rounds[r + 1];
+      if (threads_ > 1 && e - s >= std::max<std::int64_t>(knobs_.parallel_min, threads_)) {
+        parallel_round(order.data() + s, e - s);
+      } else {
+        for (std::int64_t k = s; k < e; ++k) w0.insert(order[static_cast<std::size_t>(k)]);
+      }
+    }
+    for (Worker& w : workers_) {
+      c_.inserted += w.c_.inserted;
+      c_.flips23 += w.c_.flips23;
+      c_.flips32 += w.c_.flips32;
+      c_.exact += w.c_.exact;
+      c_.walk_steps += w.c_.walk_steps;
+      c_.deferred += w.c_.deferred;
+    }
+    workers_.clear();
+    owner_.reset();
+    logged_ = {};
+    write_back();
+  }
+
+  const SequentialCounts& counts() const { return c_; }
+
+ private:
+  static constexpr std::int64_t kChunk = 1024;           // slots a thread takes at once
+  static constexpr int kBlockShift = 4;                  // tets per lock: 16
+
+  struct Cell {
+    vid_t v[4];         // kNoVertex: a free slot
+    std::int32_t n[4];  // neighbour across face i: (tet << 2 | its face), -1 none
+  };
+  static tid_t tet_of(std::int32_t f) { return f >> 2; }
+  static int face_of(std::int32_t f) { return f & 3; }
+  struct Conflict {};  // a tet another thread holds, or no room left in a parallel round
+
+  // BRIO order; rounds gets the start of every round and the end.
+  static std::vector<vid_t> brio_order(const vid_t* todo, std::int64_t n, std::vector<std::int64_t>& rounds) {
+    constexpr int kLevels = 24;
+    auto level = [](vid_t q) {
+      std::uint32_t h = static_cast<std::uint32_t>(q) * 0x9E3779B1u;
+      h ^= h >> 15;
+      h *= 0x85EBCA77u;
+      h ^= h >> 13;
+      int l = 0;
+      while (l < kLevels - 1 && (h & 1u) == 0) {
+        h >>= 1;
+        ++l;
+      }
+      return l;
+    };
+    std::vector<std::int64_t> start(kLevels + 1, 0);
+    for (std::int64_t k = 0; k < n; ++k) ++start[kLevels - 1 - level(todo[k]) + 1];
+    for (int l = 0; l < kLevels; ++l) start[l + 1] += start[l];
+    rounds.clear();
+    for (int l = 0; l <= kLevels; ++l)
+      if (rounds.empty() || start[l] != rounds.back()) rounds.push_back(start[l]);
+    std::vector<vid_t> out(static_cast<std::size_t>(n));
+    for (std::int64_t k = 0; k < n; ++k) out[static_cast<std::size_t>(start[kLevels - 1 - level(todo[k])]++)] = todo[k];
+    return out;
+  }
+
+  // Room for cap slots (one thread only: the records may move); the new ones free.
+  void grow(std::int64_t cap) {
+    const std::int64_t old = static_cast<std::int64_t>(cells_.size());
+    if (cap <= old) return;
+    cells_.reserve(static_cast<std::size_t>(cap));  // keeps the contents
+    cells_.resize(static_cast<std::size_t>(cap));
+    Cell* cs = cells_.data();
+    for (std::int64_t t = old; t < cap; ++t) cs[t] = Cell{{kNoVertex, kNoVertex, kNoVertex, kNoVertex}, {-1, -1, -1, -1}};
+  }
+
+  // One round on all threads: the points cut into contiguous pieces; the deferred ones
+  // after, on this thread.
+  void parallel_round(const vid_t* pts, std::int64_t n) {
+    Worker& w0 = workers_[0];
+    // room for every slot the round can take without growing: ≈ 6.7 tets per point,
+    // and each thread's unused chunks
+    const std::int64_t need = hwm_ + 8 * n + 4 * kChunk * static_cast<std::int64_t>(threads_);
+    if (need > static_cast<std::int64_t>(cells_.size())) grow(need + need / 4);
+    const std::size_t nb = (cells_.size() >> kBlockShift) + 1;
+    owner_.reset(new std::atomic<std::uint8_t>[nb]);
+    for (std::size_t b = 0; b < nb; ++b) owner_[b].store(0, std::memory_order_relaxed);
+    logged_.assign(cells_.size(), 0);
+    // each piece starts from its first point's tet, found here, before the threads run
+    std::vector<std::int64_t> cut(threads_ + 1);
+    for (unsigned w = 0; w <= threads_; ++w) cut[w] = n * w / threads_;
+    w0.begin(false);  // the records may have moved
+    std::vector<tid_t> start(threads_);
+    for (unsigned w = 0; w < threads_; ++w) start[w] = cut[w] < cut[w + 1] ? w0.locate(pts[cut[w]], w0.newest_) : w0.newest_;
+    std::vector<std::exception_ptr> err(threads_);
+    auto job = [&](unsigned w) {
+      Worker& me = workers_[w];
+      me.begin(true);
+      me.newest_ = start[w];
+      try {
+        for (std::int64_t k = cut[w]; k < cut[w + 1]; ++k) me.try_insert(pts[k]);
+      } catch (...) {
+        err[w] = std::current_exception();
+      }
+    };
+    std::vector<std::thread> th;
+    for (unsigned w = 1; w < threads_; ++w) th.emplace_back(job, w);
+    job(0);
+    for (std::thread& t : th) t.join();
+    w0.begin(false);
+    for (std::exception_ptr& e : err)
+      if (e) std::rethrow_exception(e);
+    for (Worker& w : workers_) {
+      for (vid_t q : w.deferred_) w0.insert(q);
+      w.deferred_.clear();
+    }
+  }
+
+  // The records back into the mesh's arrays, compacted: the alive tets in slot order at
+  // [0, alive), neighbours renumbered, capacity exactly alive (the output stage then has
+  // nothing to compact).
+  void write_back() {
+    const std::int64_t n = std::min<std::int64_t>(hwm_, static_cast<std::int64_t>(cells_.size()));
+    par::Context<B>& ctx = mesh_.context();
+    par::Buffer<tid_t, B> slot(ctx, static_cast<std::size_t>(n + 1));
+    tid_t* sl = slot.data();
+    const Cell* cs = cells_.data();
+    par::parallel_for(ctx, n, [=](std::int64_t t) { sl[t] = cs[t].v[0] != kNoVertex ? 1 : 0; });
+    const std::int64_t alive = par::counts_to_offsets(ctx, sl, static_cast<std::size_t>(n));
+    mesh_.set_size(0);
+    mesh_.reserve(alive);
+    mesh_.set_size(alive);
+    const mesh::MeshView mv = mesh_.view();
+    par::parallel_for(ctx, n, [=](std::int64_t t) {
+      if (sl[t + 1] == sl[t]) return;
+      const Cell& c = cs[t];
+      const std::int64_t d = sl[t];
+      for (int i = 0; i < 4; ++i) {
+        mv.tet[d].v[i] = c.v[i];
+        mv.opp_t[4 * d + i] = c.n[i] >= 0 ? sl[tet_of(c.n[i])] : kNoTet;
+        mv.opp_f[4 * d + i] = static_cast<std::uint8_t>(c.n[i] >= 0 ? face_of(c.n[i]) : 0);
+        mv.fflag[4 * d + i] = 0;
+      }
+      mv.state[d] = mesh::kAlive;
+    });
+    cells_.release();
+  }
+
+  // One thread's state. Outside a parallel round only workers_[0] runs, without taking
+  // tets or logging.
+  class Worker {
+   public:
+    Worker(SequentialInsertion& s, std::uint8_t id) : s_(&s), g_(s.g_), id_(id), work_(geom::kPredicateWork) {}
+
+    // --- predicates: filter first, exact (SoS) when it cannot decide --------------------
+    int orient(vid_t a, vid_t b, vid_t c, vid_t d) {
+      const int r = g_.orient_fast(a, b, c, d);
+      if (r != par::kUndecided) return r;
+      ++c_.exact;
+      return g_.orient_exact(a, b, c, d, work_.data());
+    }
+    int insphere(const vid_t* t, vid_t e) {
+      const int r = g_.template insphere<false>(t, e, nullptr);
+      if (r != par::kUndecided) return r;
+      ++c_.exact;
+      return g_.template insphere<true>(t, e, work_.data());
+    }
+    int face_flip_any(const vid_t* bv, const vid_t* apex, int i) {
+      const int f = face_flip<false>(g_, bv, apex, i, nullptr);
+      if (f != kUndecidedResult) return f;
+      ++c_.exact;
+      return face_flip<true>(g_, bv, apex, i, work_.data());
+    }
+
+    // --- tets: taken before any access in a parallel round, logged before a write ---------
+    // A thread takes the block of 2^kBlockShift slots a tet is in (owner byte = its id,
+    // compare-and-swap): one atomic operation for several tets of a point's neighbourhood.
+    GDEL_FORCEINLINE void take(tid_t t) {
+      if (!par_) return;
+      std::atomic<std::uint8_t>& o = own_[static_cast<std::size_t>(t) >> kBlockShift];
+      if (o.load(std::memory_order_relaxed) == id_) return;
+      acquire(o, t);
+    }
+    void acquire(std::atomic<std::uint8_t>& o, tid_t t) {
+      std::uint8_t z = 0;
+      if (!o.compare_exchange_strong(z, id_, std::memory_order_acquire)) throw Conflict{};
+      held_.push_back(t >> kBlockShift);
+      if (force_ > 0 && ++takes_ % force_ == 0) throw Conflict{};
+    }
+    GDEL_FORCEINLINE const Cell& rd(tid_t t) {
+      take(t);
+      return cs_[t];
+    }
+    GDEL_FORCEINLINE Cell& wr(tid_t t) {
+      Cell& c = cs_[t];
+      if (!par_) return c;
+      take(t);
+      std::uint8_t& lg = logged_[static_cast<std::size_t>(t)];  // the block holder's alone
+      if (!lg) log(t, lg);
+      return c;
+    }
+    void log(tid_t t, std::uint8_t& lg) {
+      undo_.push_back({t, cs_[t]});
+      lg = 1;
+    }
+    // Starts a round: parallel or not, on the current records.
+    void begin(bool parallel) {
+      par_ = parallel;
+      cs_ = s_->cells_.data();
+      own_ = s_->owner_.get();
+      logged_ = s_->logged_.data();
+      force_ = parallel ? s_->knobs_.force_conflict : 0;
+    }
+
+    // --- slots -------------------------------------------------------------------------
+    tid_t claim() {
+      tid_t t;
+      if (!free_.empty()) {
+        t = free_.back();
+        free_.pop_back();
+      } else {
+        if (next_ == end_) {
+          if (par_) {
+            const std::int64_t b = s_->hwm_.fetch_add(kChunk);
+            if (b + kChunk > static_cast<std::int64_t>(s_->cells_.size())) throw Conflict{};
+            next_ = b;
+            end_ = b + kChunk;
+          } else {
+            const std::int64_t b = s_->hwm_.load();
+            if (b >= (std::int64_t(1) << 30))
+              throw Error("gflip3d (one point per round): more than 2^30 tets; use Options::cpu_rounds");
+            if (b + kChunk > static_cast<std::int64_t>(s_->cells_.size())) {
+              s_->grow(b + kChunk + static_cast<std::int64_t>(s_->cells_.size()) / 4);
+              cs_ = s_->cells_.data();  // the records moved
+            }
+            s_->hwm_.store(b + kChunk);
+            next_ = b;
+            end_ = b + kChunk;
+          }
+        }
+        t = static_cast<tid_t>(next_++);
+      }
+      if (par_) claimed_.push_back(t);
+      return t;
+    }
+    void kill(tid_t t) {
+      Cell& c = wr(t);
+      c = Cell{{kNoVertex, kNoVertex, kNoVertex, kNoVertex}, {-1, -1, -1, -1}};
+      (par_ ? freed_ : free_).push_back(t);
+    }
+    GDEL_FORCEINLINE void link(tid_t t, int i, tid_t u, int j) {
+      wr(t).n[i] = u < 0 ? -1 : (u << 2 | j);
+      if (u >= 0) wr(u).n[j] = t << 2 | i;
+    }
+    void set_vertices(tid_t t, const vid_t* v) {
+      Cell& c = wr(t);
+      for (int k = 0; k < 4; ++k) c.v[k] = v[k];
+    }
+    vid_t apex(const Cell& c, int i) { return c.n[i] < 0 ? kNoVertex : rd(tet_of(c.n[i])).v[face_of(c.n[i])]; }
+
+    // --- location: remembering stochastic visibility walk (Devillers-Pion-Teillaud) -----
+    // Exact orientations with ∞ (Geo: the kernel point's cones outside the hull)
+    // subdivide space consistently, so the walk ends in the tet that holds q (SoS: never
+    // on a face). A free start (another thread's flips took it) is replaced by a live
+    // tet of this thread's recent slots.
+    tid_t locate(vid_t q, tid_t t) {
+      if (rd(t).v[0] == kNoVertex) t = live_tet();
+      int from = -1;
+      // a walk longer than that would be a broken mesh: an error, not a hang
+      const std::int64_t cap = 16 * s_->hwm_.load(std::memory_order_relaxed) + (1 << 20);
+      for (std::int64_t step = 0;; ++step) {
+        ++c_.walk_steps;
+        if (step > cap) throw std::logic_error("gflip3d (one point per round): point location did not end");
+        const Cell c = rd(t);
+        rng_ ^= rng_ << 13;
+        rng_ ^= rng_ >> 17;
+        rng_ ^= rng_ << 5;
+        const int k0 = static_cast<int>(rng_ & 3u);
+        int exit = -1;
+        for (int k = 0; k < 4 && exit < 0; ++k) {
+          const int i = (k0 + k) & 3;
+          if (i == from) continue;
+          if (orient(c.v[face_vertex(i, 0)], c.v[face_vertex(i, 1)], c.v[face_vertex(i, 2)], q) < 0) exit = i;
+        }
+        if (exit < 0) return t;
+        from = face_of(c.n[exit]);
+        t = tet_of(c.n[exit]);
+      }
+    }
+    tid_t live_tet() {
+      for (std::int64_t t = std::max<std::int64_t>(next_ - 1, 0); t >= 0; --t) {
+        try {
+          if (rd(static_cast<tid_t>(t)).v[0] != kNoVertex) return static_cast<tid_t>(t);
+        } catch (const Conflict&) {
+        }
+      }
+      throw Conflict{};
+    }
+
+    // --- 1-4 split (children as flip_kernels.hpp's split_child_vertices) ---------------
+    void split(tid_t o, vid_t p) {
+      const Cell oc = rd(o);
+      tid_t c[4] = {o, 0, 0, 0};
+      for (int i = 1; i < 4; ++i) c[i] = claim();
+      for (int i = 0; i < 4; ++i) {
+        vid_t cv[4];
+        split_child_vertices(oc.v, p, i, cv);
+        set_vertices(c[i], cv);
+        link(c[i], 3, oc.n[i] < 0 ? -1 : tet_of(oc.n[i]), face_of(oc.n[i]));
+        for (int k = 0; k < 3; ++k) {
+          const int j = face_vertex(i, k);
+          wr(c[i]).n[k] = c[j] << 2 | split_shared_face(j, i);
+        }
+        stack_.push_back(c[i]);
+      }
+      newest_ = c[3];
+    }
+
+    // --- flips (records and new tets as flip_kernels.hpp's FlipRec / flip_new_tets) ----
+    // The neighbour across the face of tet c opposite its vertex w, as a packed facet.
+    static std::int32_t across(const Cell& c, vid_t w) {
+      int l = 0;
+      for (int k = 1; k < 4; ++k)
+        if (c.v[k] == w) l = k;
+      return c.n[l];
+    }
+    void attach(tid_t s, int j, std::int32_t e) { link(s, j, e < 0 ? -1 : tet_of(e), face_of(e)); }
+    // 2-3: ts = (b, u), b = (face c0 c1 c2, v), u = (face, x); new N_k = (c_k, c_k+1, x,
+    // v). N_k's face 0 is N_k+1's face 1; its face 2 (opposite x) was b's face opposite
+    // c_k+2, its face 3 (opposite v) u's.
+    void flip23(const tid_t* ts, const FlipRec& r) {
+      const Cell T = rd(ts[0]), U = rd(ts[1]);
+      std::int32_t eb[3], eu[3];
+      for (int k = 0; k < 3; ++k) {
+        eb[k] = across(T, r.v[(k + 2) % 3]);
+        eu[k] = across(U, r.v[(k + 2) % 3]);
+      }
+      const tid_t s[3] = {ts[0], ts[1], claim()};
+      vid_t nv[3][4];
+      flip_new_tets(r, nv);
+      for (int k = 0; k < 3; ++k) set_vertices(s[k], nv[k]);
+      for (int k = 0; k < 3; ++k) {
+        wr(s[k]).n[0] = s[(k + 1) % 3] << 2 | 1;
+        wr(s[k]).n[1] = s[(k + 2) % 3] << 2 | 0;
+        attach(s[k], 2, eb[k]);
+        attach(s[k], 3, eu[k]);
+        stack_.push_back(s[k]);
+      }
+      newest_ = s[2];
+    }
+    // 3-2 of edge (eA, eB) = (r.v[3], r.v[4]): the old tet without r_j gives A = (r0, r1,
+    // r2, eA) its face opposite r_j (its own face opposite eB) and B = (r1, r0, r2, eB)
+    // its face opposite r_j (its own opposite eA); A and B share their faces 3.
+    void flip32(const tid_t* ts, const FlipRec& r) {
+      const vid_t eA = r.v[3], eB = r.v[4];
+      std::int32_t ea[3], eb[3];
+      for (int a = 0; a < 3; ++a) {
+        const Cell T = rd(ts[a]);
+        int j = 0;
+        for (int q = 0; q < 3; ++q) {
+          bool in = false;
+          for (int k = 0; k < 4; ++k) in = in || T.v[k] == r.v[q];
+          if (!in) j = q;
+        }
+        ea[j] = across(T, eB);
+        eb[j] = across(T, eA);
+      }
+      const tid_t s[2] = {ts[0], ts[1]};
+      kill(ts[2]);
+      vid_t nv[3][4];
+      flip_new_tets(r, nv);
+      set_vertices(s[0], nv[0]);
+      set_vertices(s[1], nv[1]);
+      wr(s[0]).n[3] = s[1] << 2 | 3;
+      wr(s[1]).n[3] = s[0] << 2 | 3;
+      constexpr int kInB[3] = {1, 0, 2};  // local index of r_j in B
+      for (int j = 0; j < 3; ++j) {
+        attach(s[0], j, ea[j]);
+        attach(s[1], kInB[j], eb[j]);
+      }
+      stack_.push_back(s[0]);
+      stack_.push_back(s[1]);
+      newest_ = s[1];
+    }
+
+    // --- one point ---------------------------------------------------------------------
+    void insert(vid_t p) {
+      split(locate(p, newest_), p);
+      while (!stack_.empty()) {
+        const tid_t t = stack_.back();
+        stack_.pop_back();
+        const Cell c = rd(t);
+        int ip = -1;
+        for (int k = 0; k < 4; ++k)
+          if (c.v[k] == p) ip = k;
+        if (ip < 0 || c.n[ip] < 0) continue;  // gone (its slot free or taken by a tet of this point's)
+        vid_t ap[4];
+        ap[ip] = apex(c, ip);
+        if (insphere(c.v, ap[ip]) <= 0) continue;  // locally Delaunay
+        for (int i = 0; i < 4; ++i)
+          if (i != ip) ap[i] = apex(c, i);
+        const int prop = face_flip_any(c.v, ap, ip);
+        if (prop < 0) continue;  // blocked: other flips of this point remove the face
+        // the record, as flip_outputs makes it
+        FlipRec r;
+        r.type = prop_type(prop);
+        tid_t ts[3] = {t, tet_of(c.n[ip]), -1};
+        if (r.type == 1) {
+          for (int k = 0; k < 3; ++k) r.v[k] = c.v[face_vertex(ip, k)];
+          r.v[3] = p;
+          r.v[4] = ap[ip];
+          ++c_.flips23;
+          flip23(ts, r);
+          continue;
+        }
+        const int k = prop_other(prop);
+        ts[2] = tet_of(c.n[k]);
+        int ne = 3;
+        for (int l = 0; l < 4; ++l)
+          if (l != ip && l != k) r.v[ne++] = c.v[l];
+        r.v[0] = p;
+        r.v[1] = c.v[k];
+        r.v[2] = ap[ip];
+        if (order_32<false>(g_, r, nullptr) == kUndecidedResult) {
+          ++c_.exact;
+          order_32<true>(g_, r, work_.data());
+        }
+        ++c_.flips32;
+        flip32(ts, r);
+      }
+      ++c_.inserted;
+    }
+
+    // In a parallel round: insert p as a transaction; on a conflict, undo and defer it.
+    void try_insert(vid_t p) {
+      const tid_t newest0 = newest_;
+      const SequentialCounts c0 = c_;
+      try {
+        insert(p);
+      } catch (const Conflict&) {
+        for (std::size_t k = undo_.size(); k-- > 0;) cs_[undo_[k].first] = undo_[k].second;
+        for (tid_t t : claimed_) free_.push_back(t);
+        freed_.clear();
+        stack_.clear();
+        newest_ = newest0;
+        c_ = c0;
+        ++c_.deferred;
+        deferred_.push_back(p);
+      }
+      for (tid_t t : freed_) free_.push_back(t);
+      freed_.clear();
+      claimed_.clear();
+      for (const auto& u : undo_) logged_[static_cast<std::size_t>(u.first)] = 0;
+      undo_.clear();
+      for (tid_t b : held_) own_[static_cast<std::size_t>(b)].store(0, std::memory_order_release);
+      held_.clear();
+    }
+
+    SequentialInsertion* s_;
+    Geo g_;
+    std::uint8_t id_;
+    std::vector<double> work_;
+    std::vector<tid_t> stack_;  // tets with the new point whose face opposite it is to check
+    std::vector<tid_t> free_;   // this thread's free slots
+    std::int64_t next_ = 0, end_ = 0;  // this thread's chunk of fresh slots
+    tid_t newest_ = 0;                 // the tet made last
+    std::uint32_t rng_ = 2463534242u;
+    SequentialCounts c_;
+    // the transaction of a parallel round
+    std::vector<tid_t> held_, claimed_, freed_;  // held_: blocks
+    std::vector<std::pair<tid_t, Cell>> undo_;
+    std::vector<vid_t> deferred_;
+    std::int64_t takes_ = 0, force_ = 0;  // Knobs::force_conflict
+    bool par_ = false;                    // in a parallel round: take, log
+    Cell* cs_ = nullptr;                  // the records (s_->cells_; moved only by a grow)
+    std::atomic<std::uint8_t>* own_ = nullptr;
+    std::uint8_t* logged_ = nullptr;
+  };
+
+  mesh::TetMesh<B>& mesh_;
+  Geo g_;
+  par::Buffer<Cell, B> cells_;  // the tets (backend memory: counted in Stats::peak_bytes)
+  std::atomic<std::int64_t> hwm_{0};  // slots [0, hwm) handed out (some as unused chunks)
+  std::unique_ptr<std::atomic<std::uint8_t>[]> owner_;  // parallel rounds: holder of each block of tets
+  std::vector<std::uint8_t> logged_;  // parallel rounds: tet logged in its holder's transaction
+  Knobs knobs_;
+  unsigned threads_ = 1;
+  std::vector<Worker> workers_;
+  SequentialCounts c_;
+};
+
+}  // namespace gdel::flip
