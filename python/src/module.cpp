@@ -133,6 +133,7 @@ nb::dict stats_dict(const gdel::Stats& s) {
   d["stars_rebuilt"] = s.stars_rebuilt;
   d["stars_built_on_host"] = s.stars_built_on_host;
   d["host_star_insertions"] = s.host_star_insertions;
+  d["points_deferred"] = s.points_deferred;
   d["stars_pulled"] = s.stars_pulled;
   d["splay_rounds"] = s.splay_rounds;
   d["splay_insertions"] = s.splay_insertions;
