@@ -179,16 +179,19 @@ class SequentialInsertion {
     cells_.reserve(static_cast<std::size_t>(cap));  // keeps the contents
     cells_.resize(static_cast<std::size_t>(cap));
     Cell* cs = cells_.data();
-    for (std::int64_t t = old; t < cap; ++t) cs[t] = Cell{{kNoVertex, kNoVertex, kNoVertex, kNoVertex}, {-1, -1, -1, -1}};
+    par::parallel_for(mesh_.context(), cap - old, [=](std::int64_t k) {
+      cs[old + k] = Cell{{kNoVertex, kNoVertex, kNoVertex, kNoVertex}, {-1, -1, -1, -1}};
+    });
   }
 
   // One round on all threads: the points cut into contiguous pieces; the deferred ones
   // after, on this thread.
   void parallel_round(const vid_t* pts, std::int64_t n) {
     Worker& w0 = workers_[0];
-    // room for every slot the round can take without growing: ≈ 6.7 tets per point,
-    // and each thread's unused chunks
-    const std::int64_t need = hwm_ + 8 * n + 4 * kChunk * static_cast<std::int64_t>(threads_);
+    // room for every slot the round can take without growing: ≈ 6.7 tets per point
+    // (7.25 reserved) and each thread's unused chunks; a thread that runs out defers its
+    // points to the single-threaded pass, which grows the records
+    const std::int64_t need = hwm_ + 7 * n + n / 4 + 4 * kChunk * static_cast<std::int64_t>(threads_);
     if (need > static_cast<std::int64_t>(cells_.size())) grow(need + need / 4);
     const std::size_t nb = (cells_.size() >> kBlockShift) + 1;
     owner_.reset(new std::atomic<std::uint8_t>[nb]);
