@@ -177,9 +177,13 @@ class Buffer {
   void assign(const std::vector<T>& host) { assign(host.data(), host.size()); }
   // Synchronizes.
   std::vector<T> to_host() const {
-    std::vector<T> v(size_);
-    M::to_host(*ctx_, v.data(), data_, size_ * sizeof(T));
-    return v;
+    if constexpr (!B::is_device) {
+      return std::vector<T>(data_, data_ + size_);  // one pass: no zeroing before the copy
+    } else {
+      std::vector<T> v(size_);
+      M::to_host(*ctx_, v.data(), data_, size_ * sizeof(T));
+      return v;
+    }
   }
   void copy_to_host(T* dst, std::size_t n, std::size_t offset = 0) const {
     M::to_host(*ctx_, dst, data_ + offset, n * sizeof(T));
