@@ -85,7 +85,9 @@ struct Options {
   // splits, tet reordering, an insertion rule other than circumcenter, initial = grid).
   bool cpu_rounds = false;
   // Sort output tets (each rotated to start at its smallest vertex, list sorted) so
-  // that the arrays are bitwise identical across runs and backends.
+  // that the arrays are bitwise identical across runs and backends. Without it the tets
+  // are the same set on every run, but on the CPU backend's threads (one point per round,
+  // cpu_rounds = false) their order may differ from run to run.
   bool canonical_order = false;
   // Run the exact verifier on the result and store its report summary in stats.
   bool verify = false;

@@ -5,9 +5,10 @@ path in the environment variable GDEL_CLI, else build/cpu/gdel in the repository
 (scripts/test.sh builds it before running the Python tests). Skipped when meshio is not
 installed or the command is missing.
 
-Reference: the same input written as .npz by the same command (gdel's triangulation is
-deterministic: the same input gives the same tets in the same order on every run), read
-with numpy alone.
+Reference: the same input written as .npz by the same command, read with numpy alone.
+At 300 points the CPU backend inserts on one thread, so every run gives the same tets in
+the same order (larger inputs run on several threads: the same tets, possibly in another
+order unless Options::canonical_order is set).
 """
 
 from __future__ import annotations
