@@ -485,6 +485,13 @@ case "$plan" in
     bench s14d 60 --dist grid,uniform --n 1000000 --methods gdel3d-cuda-dev,auto-cuda-dev --repeat 3
     step gdel3d 120 "$tbin/gpu_gdel3d"
     ;;
+  s15)  # after the CPU backend's one point per round: GPU tests (their cases changed), GPU uniform as in s14, CPU backend on the host's threads against CGAL
+    step gdel3d 150 "$tbin/gpu_gdel3d"
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    step hostile 90 "$tbin/gpu_hostile"
+    bench s15gpu 90 --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s15cpu 120 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal,cgal-par --repeat 3
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
