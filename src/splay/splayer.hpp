@@ -28,6 +28,8 @@
 #include <stdexcept>
 #include <thread>
 #include <atomic>
+#include <mutex>
+#include <exception>
 #include <vector>
 
 #include "parallel/atomic.hpp"
@@ -499,16 +501,27 @@ class Splayer {
   // Runs job(h) for h in [0, n) on the host's threads (at most one per job), the calling
   // thread included.
   template <class Job>
+  // An exception in a job (e.g. host memory exhausted) stops the hand-out of jobs and is
+  // rethrown here once every thread has joined (not std::terminate from a thread).
   static void on_host_threads(std::size_t n, Job job) {
     std::atomic<std::size_t> next{0};
+    std::exception_ptr err;
+    std::mutex err_mutex;
     auto worker = [&] {
-      for (std::size_t h; (h = next.fetch_add(1)) < n;) job(h);
+      try {
+        for (std::size_t h; (h = next.fetch_add(1)) < n;) job(h);
+      } catch (...) {
+        next.store(n);
+        const std::lock_guard<std::mutex> lock(err_mutex);
+        if (!err) err = std::current_exception();
+      }
     };
     const std::size_t nthreads = std::min<std::size_t>(n, std::max(1u, std::thread::hardware_concurrency()));
     std::vector<std::thread> threads;
     for (std::size_t t = 1; t < nthreads; ++t) threads.emplace_back(worker);
     worker();
     for (std::thread& t : threads) t.join();
+    if (err) std::rethrow_exception(err);
   }
   template <class T>
   void get(T* dst, const T* src, std::size_t count) {
