@@ -231,6 +231,7 @@ int bench_main(int argc, char** argv) {
             std::ostringstream nt;
             nt << r.note << "repair " << rep << " s, stars built " << t.stats.stars_built << " pulled " << t.stats.stars_pulled
                << ", rounds " << t.stats.splay_rounds;
+            if (t.stats.points_deferred > 0) nt << ", insertions deferred between threads " << t.stats.points_deferred;
             r.note = nt.str();
           }
           if (do_verify) {
