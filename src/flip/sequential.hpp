@@ -51,6 +51,8 @@
 #include <utility>
 #include <vector>
 
+#include <omp.h>
+
 #include "flip/flip_kernels.hpp"
 #include "gdel/errors.hpp"
 #include "mesh/tet_mesh.hpp"
@@ -71,7 +73,8 @@ class SequentialInsertion {
   static bool fits(std::int64_t n) { return 7 * n + n / 4 + 64 < (std::int64_t(1) << 30); }
 
   // Study and test knobs (environment, read by GFlip3D::run_sequential): threads
-  // (GDEL_CPU_THREADS; 0: the hardware's), the least round run on several threads
+  // (GDEL_CPU_THREADS; 0: OpenMP's count, as the CPU backend's other loops: OMP_NUM_THREADS
+  // or the hardware's), the least round run on several threads
   // (GDEL_CPU_PARALLEL_MIN), and a conflict forced at every k-th tet taken in a parallel
   // round (GDEL_CPU_FORCE_CONFLICT; 0: none), which exercises the undo.
   struct Knobs {
@@ -86,7 +89,7 @@ class SequentialInsertion {
     grow(std::max(reserve, n0 + 64));
     hwm_ = n0;
     const mesh::MeshView mv = mesh.view();
-    threads_ = std::min(64u, k.threads ? k.threads : std::max(1u, std::thread::hardware_concurrency()));
+    threads_ = std::min(64u, k.threads ? k.threads : static_cast<unsigned>(std::max(1, omp_get_max_threads())));
     workers_.reserve(threads_);
     for (unsigned w = 0; w < threads_; ++w) workers_.emplace_back(*this, static_cast<std::uint8_t>(w + 1));
     for (std::int64_t t = 0; t < n0; ++t) {
