@@ -189,11 +189,11 @@ class GFlip3D {
     }
   }
 
-  // FlipConfig::sequential applies: a host backend and at most 2^30 tets expected
+  // FlipConfig::sequential applies: a host backend and the slots a run reserves below 2^29
   // (SequentialInsertion::fits); otherwise the rounds run.
   bool sequential_fits() const {
     if constexpr (B::is_device) return false;
-    else return SequentialInsertion<B>::fits(n_);
+    else return SequentialInsertion<B>::fits(initial_slots());
   }
   // FlipConfig::sequential: the points todo_ inserted one per round.
   void run_sequential() {

@@ -24,8 +24,9 @@
 // Host threads. A large round is cut into as many contiguous pieces of the curve as there
 // are threads (spatially compact regions); each thread inserts its piece's points one at
 // a time, as above, while the others do theirs. A point's insertion is a transaction: the
-// thread takes every tet it reads or writes (an owner byte per tet, compare-and-swap),
-// logs each tet before its first write, and releases them when the point is in. Finding
+// thread takes every tet it reads or writes (an owner byte per block of 16 tets,
+// compare-and-swap), logs each tet before its first write, and releases them when the
+// point is in. Finding
 // a tet taken by another thread (only near the pieces' borders), it restores the logged
 // tets and defers the point; the deferred points are inserted after the round by one
 // thread. Each insertion is thus atomic with respect to the others, so the result is the
@@ -60,7 +61,7 @@
 namespace gdel::flip {
 
 struct SequentialCounts {
-  std::int64_t inserted = 0, flips23 = 0, flips32 = 0, exact = 0, walk_steps = 0, deferred = 0;
+  std::int64_t inserted = 0, flips23 = 0, flips32 = 0, exact = 0, deferred = 0;
 };
 
 template <class B>
@@ -68,9 +69,11 @@ class SequentialInsertion {
   static_assert(!B::is_device, "one point per round runs on host memory");
 
  public:
-  // Records hold a tet id in 30 bits (with its face in 2): at most 2^30 tets, about
-  // 1.5·10^8 points, far more than a run on host cores takes; fits() says whether n do.
-  static bool fits(std::int64_t n) { return 7 * n + n / 4 + 64 < (std::int64_t(1) << 30); }
+  // A link is a non-negative int32 (tet << 2 | face): tet ids below 2^29, about 7·10^7
+  // points, more than a run on host cores takes. fits() says whether `slots` (the slots
+  // reserved for a run, GFlip3D::initial_slots) stay below that.
+  static constexpr std::int64_t kMaxTets = std::int64_t(1) << 29;
+  static bool fits(std::int64_t slots) { return slots < kMaxTets; }
 
   // Study and test knobs (environment, read by GFlip3D::run_sequential): threads
   // (GDEL_CPU_THREADS; 0: OpenMP's count, as the CPU backend's other loops: OMP_NUM_THREADS
@@ -126,7 +129,6 @@ class SequentialInsertion {
       c_.flips23 += w.c_.flips23;
       c_.flips32 += w.c_.flips32;
       c_.exact += w.c_.exact;
-      c_.walk_steps += w.c_.walk_steps;
       c_.deferred += w.c_.deferred;
     }
     workers_.clear();
@@ -164,14 +166,18 @@ class SequentialInsertion {
       }
       return l;
     };
+    std::vector<std::uint8_t> round(static_cast<std::size_t>(n));  // kLevels - 1 - level: highest first
     std::vector<std::int64_t> start(kLevels + 1, 0);
-    for (std::int64_t k = 0; k < n; ++k) ++start[kLevels - 1 - level(todo[k]) + 1];
+    for (std::int64_t k = 0; k < n; ++k) {
+      round[static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(kLevels - 1 - level(todo[k]));
+      ++start[round[static_cast<std::size_t>(k)] + 1];
+    }
     for (int l = 0; l < kLevels; ++l) start[l + 1] += start[l];
     rounds.clear();
     for (int l = 0; l <= kLevels; ++l)
       if (rounds.empty() || start[l] != rounds.back()) rounds.push_back(start[l]);
     std::vector<vid_t> out(static_cast<std::size_t>(n));
-    for (std::int64_t k = 0; k < n; ++k) out[static_cast<std::size_t>(start[kLevels - 1 - level(todo[k])]++)] = todo[k];
+    for (std::int64_t k = 0; k < n; ++k) out[static_cast<std::size_t>(start[round[static_cast<std::size_t>(k)]]++)] = todo[k];
     return out;
   }
 
@@ -336,13 +342,14 @@ class SequentialInsertion {
         if (next_ == end_) {
           if (par_) {
             const std::int64_t b = s_->hwm_.fetch_add(kChunk);
-            if (b + kChunk > static_cast<std::int64_t>(s_->cells_.size())) throw Conflict{};
+            if (b + kChunk > std::min<std::int64_t>(static_cast<std::int64_t>(s_->cells_.size()), kMaxTets))
+              throw Conflict{};  // the single-threaded pass grows the records, or reports the limit
             next_ = b;
             end_ = b + kChunk;
           } else {
             const std::int64_t b = s_->hwm_.load();
-            if (b >= (std::int64_t(1) << 30))
-              throw Error("gflip3d (one point per round): more than 2^30 tets; use Options::cpu_rounds");
+            if (b + kChunk > kMaxTets)
+              throw Error("gflip3d (one point per round): more than 2^29 tets; use Options::cpu_rounds");
             if (b + kChunk > static_cast<std::int64_t>(s_->cells_.size())) {
               s_->grow(b + kChunk + static_cast<std::int64_t>(s_->cells_.size()) / 4);
               cs_ = s_->cells_.data();  // the records moved
@@ -383,7 +390,6 @@ class SequentialInsertion {
       // a walk longer than that would be a broken mesh: an error, not a hang
       const std::int64_t cap = 16 * s_->hwm_.load(std::memory_order_relaxed) + (1 << 20);
       for (std::int64_t step = 0;; ++step) {
-        ++c_.walk_steps;
         if (step > cap) throw std::logic_error("gflip3d (one point per round): point location did not end");
         const Cell c = rd(t);
         rng_ ^= rng_ << 13;
