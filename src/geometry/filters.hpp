@@ -67,27 +67,39 @@ GDEL_HD GDEL_FORCEINLINE int lifted_filter(const double* const* p, const double*
       la[i] = s;
     }
   }
-  // 2x2 minors on (x, y): m[i][j] = x_i y_j - x_j y_i, and their permanents.
-  double m[4][4], q[4][4];
+  // 2x2 minors on (x, y): m[i][j] = x_i y_j - x_j y_i.
+  double m[4][4];
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      m[i][j] = sub(mul(x[i], y[j]), mul(x[j], y[i]));
-      q[i][j] = add(mul(ax[i], ay[j]), mul(ax[j], ay[i]));
-    }
-  // 3x3 minors M(ijk) = z_i m_jk - z_j m_ik + z_k m_ij (i < j < k), with permanents.
-  auto minor3 = [&](int i, int j, int k, double& v, double& pv) {
-    v = add(sub(mul(z[i], m[j][k]), mul(z[j], m[i][k])), mul(z[k], m[i][j]));
-    pv = add(add(mul(az[i], q[j][k]), mul(az[j], q[i][k])), mul(az[k], q[i][j]));
-  };
-  double m0, m1, m2, m3, p0, p1, p2, p3;
-  minor3(1, 2, 3, m0, p0);
-  minor3(0, 2, 3, m1, p1);
-  minor3(0, 1, 3, m2, p2);
-  minor3(0, 1, 2, m3, p3);
+    for (int j = i + 1; j < 4; ++j) m[i][j] = sub(mul(x[i], y[j]), mul(x[j], y[i]));
+  // 3x3 minors M(ijk) = z_i m_jk - z_j m_ik + z_k m_ij (i < j < k).
+  auto minor3 = [&](int i, int j, int k) { return add(sub(mul(z[i], m[j][k]), mul(z[j], m[i][k])), mul(z[k], m[i][j])); };
+  const double m0 = minor3(1, 2, 3), m1 = minor3(0, 2, 3), m2 = minor3(0, 1, 3), m3 = minor3(0, 1, 2);
   const double det = add(sub(mul(l[0], m0), mul(l[1], m1)), sub(mul(l[2], m2), mul(l[3], m3)));
+  constexpr double threshold = Weighted ? bounds::kPowerThreshold : bounds::kInsphereThreshold;
+  constexpr int roundings = Weighted ? bounds::kPowerRoundings : bounds::kInsphereRoundings;
+  // First a cheap bound B^ >= P^: the permanent's expression tree below evaluated with
+  // every leaf replaced by the largest leaf of its kind (filter_bounds.hpp, section 5).
+  double X = 0, Y = 0, Z = 0, L = 0;
+  for (int i = 0; i < 4; ++i) {
+    X = ax[i] > X ? ax[i] : X;
+    Y = ay[i] > Y ? ay[i] : Y;
+    Z = az[i] > Z ? az[i] : Z;
+    L = la[i] > L ? la[i] : L;
+  }
+  const double qb = add(mul(X, Y), mul(X, Y));
+  const double tb = mul(Z, qb);
+  const double pb = add(add(tb, tb), tb);
+  const double ub = mul(L, pb);
+  const int quick = filter_decide(det, add(add(ub, ub), add(ub, ub)), threshold, roundings);
+  if (quick != kUncertain) return quick;
+  // Then the permanent P^ itself: the same tree on the absolute values.
+  double q[4][4];
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) q[i][j] = add(mul(ax[i], ay[j]), mul(ax[j], ay[i]));
+  auto perm3 = [&](int i, int j, int k) { return add(add(mul(az[i], q[j][k]), mul(az[j], q[i][k])), mul(az[k], q[i][j])); };
+  const double p0 = perm3(1, 2, 3), p1 = perm3(0, 2, 3), p2 = perm3(0, 1, 3), p3 = perm3(0, 1, 2);
   const double perm = add(add(mul(la[0], p0), mul(la[1], p1)), add(mul(la[2], p2), mul(la[3], p3)));
-  return filter_decide(det, perm, Weighted ? bounds::kPowerThreshold : bounds::kInsphereThreshold,
-                       Weighted ? bounds::kPowerRoundings : bounds::kInsphereRoundings);
+  return filter_decide(det, perm, threshold, roundings);
 }
 
 }  // namespace detail
