@@ -26,44 +26,35 @@ struct Prepared {
 };
 
 // xp: 3n coordinates on the backend; wp: n weights on the backend or nullptr. With
-// weights the representative of equal points is the heaviest (sort::duplicate_representatives).
+// weights the representative of equal points is the heaviest (sort::distinct_hilbert_order).
 // Throws DegenerateInput with fewer than 4 distinct points.
 template <class B>
 void prepare_points(par::Context<B>& ctx, const double* xp, std::int64_t n, const double* wp, Prepared<B>& pr) {
   using I64 = std::int64_t;
   pr.n = n;
-  pr.rep.resize(static_cast<std::size_t>(std::max<I64>(n, 1)));
-  I64* rp = pr.rep.data();
-  const I64 m = sort::duplicate_representatives(ctx, xp, n, rp, wp);
-  pr.m = m;
-  if (m < 4) throw DegenerateInput("need at least 4 distinct points, got " + std::to_string(m));
-  par::Buffer<I64, B> ids(ctx, static_cast<std::size_t>(m));  // distinct points (input ids, ascending)
-  I64* idp = ids.data();
-  par::select_indices(ctx, static_cast<std::size_t>(n), idp, [=] GDEL_HD(I64 i) { return rp[i] == i; });
+  // bounding box of the points (the same as the distinct points')
   {
-    par::Buffer<double, B> coord(ctx, static_cast<std::size_t>(m));
+    par::Buffer<double, B> coord(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));
     double* cp = coord.data();
     for (int a = 0; a < 3; ++a) {
-      par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) { cp[k] = xp[3 * idp[k] + a]; });
-      pr.lo[a] = par::reduce_min(ctx, cp, static_cast<std::size_t>(m), HUGE_VAL);
-      pr.hi[a] = par::reduce_max(ctx, cp, static_cast<std::size_t>(m), -HUGE_VAL);
+      par::parallel_for(ctx, n, [=] GDEL_HD(I64 k) { cp[k] = xp[3 * k + a]; });
+      pr.lo[a] = par::reduce_min(ctx, cp, static_cast<std::size_t>(n), HUGE_VAL);
+      pr.hi[a] = par::reduce_max(ctx, cp, static_cast<std::size_t>(n), -HUGE_VAL);
     }
   }
+  pr.rep.resize(static_cast<std::size_t>(std::max<I64>(n, 1)));
+  par::Buffer<I64, B> ids(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));  // distinct points (input ids), Hilbert order
+  I64* idp = ids.data();
+  const I64 m = sort::distinct_hilbert_order(ctx, xp, n, pr.lo, pr.hi, pr.rep.data(), idp, wp);
+  pr.m = m;
+  if (m < 4) throw DegenerateInput("need at least 4 distinct points, got " + std::to_string(m));
   pr.P.resize(static_cast<std::size_t>(3 * (m + 1)));
   pr.sid.resize(static_cast<std::size_t>(m + 1));
-  par::Buffer<double, B> dx(ctx, static_cast<std::size_t>(3 * m));
-  double* dxp = dx.data();
-  par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) {
-    for (int a = 0; a < 3; ++a) dxp[3 * k + a] = xp[3 * idp[k] + a];
-  });
-  par::Buffer<I64, B> ord(ctx, static_cast<std::size_t>(m));
-  I64* op = ord.data();
-  sort::hilbert_order(ctx, dxp, m, pr.lo, pr.hi, op);
   double* pp = pr.P.data();
   I64* sp = pr.sid.data();
   par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) {
-    for (int a = 0; a < 3; ++a) pp[3 * k + a] = dxp[3 * op[k] + a];
-    sp[k] = idp[op[k]];
+    for (int a = 0; a < 3; ++a) pp[3 * k + a] = xp[3 * idp[k] + a];
+    sp[k] = idp[k];
   });
   par::parallel_for(ctx, 1, [=] GDEL_HD(I64) { sp[m] = n; });  // ∞ perturbs least; any fixed index works
   if (wp) {

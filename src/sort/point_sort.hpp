@@ -37,46 +37,81 @@ void lexicographic_order(par::Context<B>& ctx, const double* X, std::int64_t n, 
   }
 }
 
-// rep[i] = smallest index of a point equal to point i (rep[i] == i for the points
-// kept when duplicates are removed). Returns the number of distinct points. With
-// weights W (regular triangulation), the representative is the heaviest of the equal
-// points (the others are hidden by it), the smallest index among equally heavy ones.
-template <class B>
-std::int64_t duplicate_representatives(par::Context<B>& ctx, const double* X, std::int64_t n, std::int64_t* rep,
-                                       const double* W = nullptr) {
-  if (n == 0) return 0;
-  par::Buffer<std::int64_t, B> order(ctx, static_cast<std::size_t>(n));
-  std::int64_t* o = order.data();
-  lexicographic_order(ctx, X, n, o);
-  par::Buffer<std::int64_t, B> start(ctx, static_cast<std::size_t>(n));
-  std::int64_t* sp = start.data();
-  par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t k) {
-    sp[k] = (k == 0 || !same_point(X, o[k - 1], o[k])) ? 1 : 0;
-  });
-  std::int64_t distinct = par::reduce_sum(ctx, sp, static_cast<std::size_t>(n));
-  par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t k) {
-    if (!sp[k]) return;
-    std::int64_t best = o[k];
-    for (std::int64_t j = k + 1; W && j < n && !sp[j]; ++j)
-      if (W[o[j]] > W[best]) best = o[j];
-    for (std::int64_t j = k; j < n && (j == k || !sp[j]); ++j) rep[o[j]] = best;
-  });
-  return distinct;
-}
-
 // order[k] = index of the k-th point along the 3-D Hilbert curve of the bounding box
-// (21 bits per axis; ties keep index order).
+// (21 bits per axis; ties keep index order). keys (n, optional): the sorted keys.
 template <class B>
 void hilbert_order(par::Context<B>& ctx, const double* X, std::int64_t n, const double lo[3], const double hi[3],
-                   std::int64_t* order) {
-  par::Buffer<std::uint64_t, B> key(ctx, static_cast<std::size_t>(n));
-  std::uint64_t* kp = key.data();
+                   std::int64_t* order, std::uint64_t* keys = nullptr) {
+  par::Buffer<std::uint64_t, B> key(ctx, keys ? 0 : static_cast<std::size_t>(n));
+  std::uint64_t* kp = keys ? keys : key.data();
   const sfc::Quantizer q = sfc::Quantizer::from_box(lo, hi);
   par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) {
     kp[i] = sfc::hilbert_key(q, X[3 * i], X[3 * i + 1], X[3 * i + 2]);
     order[i] = i;
   });
   par::sort_pairs(ctx, kp, order, static_cast<std::size_t>(n), sfc::kKeyBits);
+}
+
+// The distinct points in Hilbert order, from one sort. Equal points have equal Hilbert
+// keys, so only the points in runs of equal keys (none in most inputs) are compared: they
+// are re-sorted by (key, x, y, z), stably, so that equal points are consecutive and in
+// index order. Outputs:
+//   rep[i]     the input id that represents point i: the smallest index of the points
+//              equal to it, or with weights W (regular triangulation) the heaviest of them
+//              (the others are hidden by it; the smallest index among equally heavy ones);
+//   order[k]   k < m: the representative of the k-th distinct point along the curve of the
+//              box [lo, hi] (which must hold every point).
+// Returns m, the number of distinct points. Ties of the key between distinct points are
+// in lexicographic order.
+template <class B>
+std::int64_t distinct_hilbert_order(par::Context<B>& ctx, const double* X, std::int64_t n, const double lo[3],
+                                    const double hi[3], std::int64_t* rep, std::int64_t* order,
+                                    const double* W = nullptr) {
+  using I64 = std::int64_t;
+  if (n == 0) return 0;
+  par::Buffer<std::uint64_t, B> key(ctx, static_cast<std::size_t>(n));
+  par::Buffer<I64, B> ord(ctx, static_cast<std::size_t>(n));
+  std::uint64_t* kp = key.data();
+  I64* op = ord.data();
+  hilbert_order(ctx, X, n, lo, hi, op, kp);
+  const sfc::Quantizer q = sfc::Quantizer::from_box(lo, hi);
+  auto tied = [=] GDEL_HD(I64 k) { return (k > 0 && kp[k - 1] == kp[k]) || (k + 1 < n && kp[k + 1] == kp[k]); };
+  const I64 nt = par::count_indices(ctx, static_cast<std::size_t>(n), tied);
+  if (nt > 0) {
+    par::Buffer<I64, B> pos(ctx, static_cast<std::size_t>(nt));
+    par::Buffer<I64, B> sub(ctx, static_cast<std::size_t>(nt));
+    par::Buffer<std::uint64_t, B> k2(ctx, static_cast<std::size_t>(nt));
+    I64* pp = pos.data();
+    I64* sp = sub.data();
+    std::uint64_t* k2p = k2.data();
+    par::select_indices(ctx, static_cast<std::size_t>(n), pp, tied);
+    par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) { sp[j] = op[pp[j]]; });
+    // LSD passes, each stable: z, y, x, then the key (the runs, in their order)
+    for (int axis = 2; axis >= 0; --axis) {
+      par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) { k2p[j] = orderable(X[3 * sp[j] + axis]); });
+      par::sort_pairs(ctx, k2p, sp, static_cast<std::size_t>(nt), 64);
+    }
+    par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) {
+      k2p[j] = sfc::hilbert_key(q, X[3 * sp[j]], X[3 * sp[j] + 1], X[3 * sp[j] + 2]);
+    });
+    par::sort_pairs(ctx, k2p, sp, static_cast<std::size_t>(nt), sfc::kKeyBits);
+    par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) { op[pp[j]] = sp[j]; });  // the runs, re-sorted in place
+  }
+  key.release();
+  // groups of equal points: st[k + 1] != st[k] at a group's first, st[k] its number
+  par::Buffer<I64, B> start(ctx, static_cast<std::size_t>(n + 1));
+  I64* st = start.data();
+  par::parallel_for(ctx, n, [=] GDEL_HD(I64 k) { st[k] = (k == 0 || !same_point(X, op[k - 1], op[k])) ? 1 : 0; });
+  const I64 m = par::counts_to_offsets(ctx, st, static_cast<std::size_t>(n));
+  par::parallel_for(ctx, n, [=] GDEL_HD(I64 k) {
+    if (st[k + 1] == st[k]) return;
+    I64 best = op[k];
+    for (I64 j = k + 1; W && j < n && st[j + 1] == st[j]; ++j)
+      if (W[op[j]] > W[best]) best = op[j];
+    for (I64 j = k; j < n && (j == k || st[j + 1] == st[j]); ++j) rep[op[j]] = best;
+    order[st[k]] = best;
+  });
+  return m;
 }
 
 }  // namespace gdel::sort

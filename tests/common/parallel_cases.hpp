@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <random>
@@ -12,6 +13,7 @@
 
 #include "parallel/atomic.hpp"
 #include "parallel/primitives.hpp"
+#include "sort/point_sort.hpp"
 
 namespace gdel::test {
 
@@ -176,6 +178,101 @@ void buffer_cases(par::Context<B>& ctx) {
     EXPECT_GE(ctx.memory().peak(), before + 1000 * sizeof(int));
   }
   EXPECT_EQ(ctx.memory().current(), before);  // everything returned
+}
+
+
+// sort::distinct_hilbert_order against brute force: representatives (smallest index, or
+// the heaviest with weights), each distinct point once, in key order and lexicographic
+// order within a key. Inputs with many key ties: clusters far below the box's cell size
+// (a huge range), with duplicates inside and outside the clusters.
+template <class B>
+void distinct_order_cases(par::Context<B>& ctx) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int variant = 0; variant < 6; ++variant) {
+    SCOPED_TRACE(variant);
+    const bool weighted = variant % 2 == 1;
+    std::vector<double> X;
+    auto push = [&](double x, double y, double z) { X.insert(X.end(), {x, y, z}); };
+    const int n0 = variant < 2 ? 20000 : 3000;
+    for (int i = 0; i < n0; ++i) {
+      if (variant >= 4) push(std::ldexp(u(rng), -60), std::ldexp(u(rng), -60), 0.0);  // all in a few cells
+      else if (variant >= 2 && i % 3 == 0) push(1.0 + std::ldexp(u(rng), -50), 2.0, std::ldexp(u(rng), -50));
+      else push(u(rng), u(rng), u(rng));
+    }
+    push(1e9, -1e9, 1e9);  // the range
+    push(-1e9, 1e9, -1e9);
+    const std::size_t base = X.size() / 3;
+    for (std::size_t i = 0; i < base / 4; ++i) {  // duplicates of random earlier points
+      const std::size_t j = rng() % (X.size() / 3);
+      push(X[3 * j], X[3 * j + 1], X[3 * j + 2]);
+    }
+    X[3 * 5] = -0.0;  // -0 equals +0
+    X[3 * 6] = 0.0;
+    X[3 * 6 + 1] = X[3 * 5 + 1];
+    X[3 * 6 + 2] = X[3 * 5 + 2];
+    const std::int64_t n = static_cast<std::int64_t>(X.size() / 3);
+    std::vector<double> w(static_cast<std::size_t>(n));
+    for (auto& x : w) x = static_cast<double>(rng() % 4);  // ties among the heaviest too
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = hi[a] = X[a];
+      for (std::int64_t i = 0; i < n; ++i) {
+        lo[a] = std::min(lo[a], X[3 * i + a]);
+        hi[a] = std::max(hi[a], X[3 * i + a]);
+      }
+    }
+    par::Buffer<double, B> Xd(ctx), Wd(ctx);
+    Xd.assign(X);
+    Wd.assign(w);
+    par::Buffer<std::int64_t, B> rep(ctx, static_cast<std::size_t>(n)), order(ctx, static_cast<std::size_t>(n));
+    const std::int64_t m = sort::distinct_hilbert_order(ctx, Xd.data(), n, lo, hi, rep.data(), order.data(),
+                                                        weighted ? Wd.data() : nullptr);
+    const auto rh = rep.to_host();
+    auto oh = order.to_host();
+    oh.resize(static_cast<std::size_t>(m));
+    // brute force: groups of equal points by a lexicographic sort of the indices
+    auto eq = [&](std::int64_t a, std::int64_t b) {
+      return X[3 * a] == X[3 * b] && X[3 * a + 1] == X[3 * b + 1] && X[3 * a + 2] == X[3 * b + 2];
+    };
+    auto less = [&](std::int64_t a, std::int64_t b) {
+      for (int k = 0; k < 3; ++k)
+        if (X[3 * a + k] != X[3 * b + k]) return X[3 * a + k] < X[3 * b + k];
+      return false;
+    };
+    std::vector<std::int64_t> idx(static_cast<std::size_t>(n));
+    std::iota(idx.begin(), idx.end(), std::int64_t(0));
+    std::stable_sort(idx.begin(), idx.end(), less);
+    std::vector<std::int64_t> want(static_cast<std::size_t>(n)), reps;
+    for (std::size_t s = 0; s < idx.size();) {
+      std::size_t e = s + 1;
+      while (e < idx.size() && eq(idx[s], idx[e])) ++e;
+      std::int64_t best = idx[s];
+      for (std::size_t j = s; j < e; ++j)
+        if (weighted && w[static_cast<std::size_t>(idx[j])] > w[static_cast<std::size_t>(best)]) best = idx[j];
+      for (std::size_t j = s; j < e; ++j) want[static_cast<std::size_t>(idx[j])] = best;
+      reps.push_back(best);
+      s = e;
+    }
+    ASSERT_EQ(m, static_cast<std::int64_t>(reps.size()));
+    EXPECT_EQ(rh, want);
+    std::vector<std::int64_t> sorted = oh;
+    std::sort(sorted.begin(), sorted.end());
+    std::sort(reps.begin(), reps.end());
+    EXPECT_EQ(sorted, reps);  // each distinct point once, by its representative
+    const sfc::Quantizer q = sfc::Quantizer::from_box(lo, hi);
+    auto key = [&](std::int64_t i) { return sfc::hilbert_key(q, X[3 * i], X[3 * i + 1], X[3 * i + 2]); };
+    std::int64_t ties = 0;
+    for (std::size_t k = 1; k < oh.size(); ++k) {
+      const auto a = key(oh[k - 1]), b = key(oh[k]);
+      ASSERT_LE(a, b) << k;
+      if (a == b) {
+        ++ties;
+        EXPECT_TRUE(less(oh[k - 1], oh[k])) << k;
+      }
+    }
+    if (variant >= 2) EXPECT_GT(ties, 100);  // the clusters share cells: the tie path ran
+  }
 }
 
 }  // namespace gdel::test

@@ -12,3 +12,7 @@ TEST(ParallelCpu, UniqueManyRuns) {
   gdel::par::Context<gdel::par::Cpu> ctx;
   gdel::test::unique_cases(ctx);
 }
+TEST(ParallelCpu, DistinctHilbertOrder) {
+  gdel::par::Context<gdel::par::Cpu> ctx;
+  gdel::test::distinct_order_cases(ctx);
+}

@@ -21,3 +21,7 @@ TEST(ParallelGpu, UniqueManyRuns) {
   gdel::par::Context<gdel::par::Cuda> ctx;
   gdel::test::unique_cases(ctx);
 }
+TEST(ParallelGpu, DistinctHilbertOrder) {
+  gdel::par::Context<gdel::par::Cuda> ctx;
+  gdel::test::distinct_order_cases(ctx);
+}
