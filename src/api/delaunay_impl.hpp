@@ -142,6 +142,22 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
 
   // --- output ----------------------------------------------------------------------------
   t0 = std::chrono::steady_clock::now();
+  // One point per round leaves the exact Delaunay triangulation (flip/sequential.hpp) in
+  // its records: the exact output comes straight from them (no repair, no mesh).
+  if (exact && sequential) {
+    Buffer<vid_t, B> tv(ctx);
+    Buffer<std::int32_t, B> tn(ctx);
+    if (alg.extract_one_point_per_round(tv, tn, sid.data(), st.flat_tets_removed)) {
+      par::mark(ctx, "one point per round: extract");
+      sink.tets(tv, tn, out);
+      par::mark(ctx, "output: results to caller");
+      st.stages.push_back({"output", since(t0)});
+      st.peak_bytes = static_cast<I64>(ctx.memory().peak());
+      st.seconds = since(t_start);
+      report_profile(ctx, st);
+      return out;
+    }
+  }
   auto& mesh = alg.mesh();
   if (!sequential) {  // one point per round wrote the mesh back compacted
     mesh.compact(/*shrink=*/true);
@@ -154,9 +170,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   if (exact) {
     auto t1 = std::chrono::steady_clock::now();
     splay::GDel3D<B> rep(ctx, mesh, g, m);
-    // One point per round leaves the exact Delaunay triangulation (flip/sequential.hpp):
-    // nothing to repair; the extract still drops flat tets on coplanar hull faces.
-    if (!sequential) {
+    if (!sequential) {  // (one point per round with its mesh written back: nothing to repair)
       rep.repair();
       par::mark(ctx, "gdel3d repair");
       st.stages.push_back({"gdel3d repair (star splaying)", since(t1)});

@@ -12,6 +12,7 @@
 #include <climits>
 #include <cstdlib>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -203,9 +204,9 @@ class GFlip3D {
       if (const char* e = std::getenv("GDEL_CPU_THREADS")) k.threads = static_cast<unsigned>(std::max(0, std::atoi(e)));
       if (const char* e = std::getenv("GDEL_CPU_PARALLEL_MIN")) k.parallel_min = std::max(1LL, std::atoll(e));
       if (const char* e = std::getenv("GDEL_CPU_FORCE_CONFLICT")) k.force_conflict = std::max(0LL, std::atoll(e));
-      SequentialInsertion<B> seq(mesh_, geo(), initial_slots(), k);
-      seq.run(todo_.data(), static_cast<std::int64_t>(todo_.size()));
-      const SequentialCounts& c = seq.counts();
+      seq_ = std::make_unique<SequentialInsertion<B>>(mesh_, geo(), initial_slots(), k);
+      seq_->run(todo_.data(), static_cast<std::int64_t>(todo_.size()));
+      const SequentialCounts& c = seq_->counts();
       st_.rounds += c.inserted;
       st_.flips23 += c.flips23;
       st_.flips32 += c.flips32;
@@ -213,7 +214,10 @@ class GFlip3D {
       st_.points_deferred += c.deferred;
       todo_.release();
       par::mark(ctx_, "insert + flip, one point per round");
-      check_mesh("after one-point-per-round insertion");
+      if (debug_) {
+        mesh();  // written back
+        check_mesh("after one-point-per-round insertion");
+      }
       stage("insertion + flipping, one point per round (CPU)", t0);
     }
   }
@@ -221,7 +225,33 @@ class GFlip3D {
   // run() inserted one point per round (FlipConfig::sequential, when it applies): the
   // mesh is the exact Delaunay triangulation, compacted.
   bool ran_one_point_per_round() const { return sequential_ran_; }
-  mesh::TetMesh<B>& mesh() { return mesh_; }
+  // The mesh. After one point per round the tets are still in its records: the first
+  // call writes them back (SequentialInsertion::write_back).
+  mesh::TetMesh<B>& mesh() {
+    if constexpr (!B::is_device) {
+      if (seq_) {
+        seq_->write_back();
+        seq_.reset();
+        par::mark(ctx_, "one point per round: mesh written back");
+      }
+    }
+    return mesh_;
+  }
+  // After one point per round, before mesh() is called: the finite tets of the exact
+  // Delaunay triangulation straight from the records (SequentialInsertion::extract:
+  // vertices as sid[v], neighbours -1 across the hull, flat tets dropped and counted in
+  // flat). False, with nothing written, when the mesh holds the result instead.
+  bool extract_one_point_per_round(Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr, const std::int64_t* sid,
+                                   std::int64_t& flat) {
+    if constexpr (B::is_device) {
+      return false;
+    } else {
+      if (!seq_) return false;
+      flat = seq_->extract(tets, nbr, sid, st_.exact_evaluations);
+      seq_.reset();
+      return true;
+    }
+  }
   // Frees everything but the mesh (per-point and per-tet work arrays, flip log): for
   // after run(), so that the repair and the output do not sit beside them.
   void release_work() {
@@ -1343,6 +1373,7 @@ class GFlip3D {
   double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0, t_reorder_ = 0;
   bool debug_ = false;
   bool sequential_ran_ = false;
+  std::unique_ptr<SequentialInsertion<B>> seq_;  // one point per round: the tets, until mesh() or the extract
   int tie_mode_ = kDefaultTieMode;  // tie_break's mode
   bool trace_ = false;  // GDEL_FLIP_TRACE=1: one line per InsFlip round on stderr
   double inv_scale_ = 1.0;

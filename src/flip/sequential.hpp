@@ -38,8 +38,9 @@
 // parallel rounds for few cores: the rounds stay available, FlipConfig::sequential =
 // false, Options::cpu_rounds). While it runs, the tets live in one 32-byte record each
 // (4 vertices, 4 packed neighbour facets t << 2 | face): a tet and its adjacency in one
-// cache line instead of the mesh's five arrays (bench/RESULTS.md, session 15); the mesh is
-// written back, compacted, at the end.
+// cache line instead of the mesh's five arrays (bench/RESULTS.md, session 15). At the end
+// either the mesh is written back from them, compacted (write_back), or the output is
+// extracted from them directly (extract: gdel::delaunay's exact path, no mesh at all).
 #pragma once
 
 #include <algorithm>
@@ -56,6 +57,7 @@
 
 #include "flip/flip_kernels.hpp"
 #include "gdel/errors.hpp"
+#include "mesh/open_faces.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace gdel::flip {
@@ -66,8 +68,6 @@ struct SequentialCounts {
 
 template <class B>
 class SequentialInsertion {
-  static_assert(!B::is_device, "one point per round runs on host memory");
-
  public:
   // A link is a non-negative int32 (tet << 2 | face): tet ids below 2^29, about 7·10^7
   // points, more than a run on host cores takes. fits() says whether `slots` (the slots
@@ -88,6 +88,7 @@ class SequentialInsertion {
 
   SequentialInsertion(mesh::TetMesh<B>& mesh, const Geo& g, std::int64_t reserve, Knobs k = {})
       : mesh_(mesh), g_(g), cells_(mesh.context()), knobs_(k) {
+    static_assert(!B::is_device, "one point per round runs on host memory");
     const std::int64_t n0 = mesh.size();
     grow(std::max(reserve, n0 + 64));
     hwm_ = n0;
@@ -107,8 +108,8 @@ class SequentialInsertion {
     }
   }
 
-  // Inserts the points todo[0..n) (internal ids, none a vertex yet) in BRIO order, then
-  // writes the tets back to the mesh (compacted).
+  // Inserts the points todo[0..n) (internal ids, none a vertex yet) in BRIO order. The
+  // tets stay in the records: write_back() or extract() next.
   void run(const vid_t* todo, std::int64_t n) {
     std::vector<std::int64_t> rounds;
     const std::vector<vid_t> order = brio_order(todo, n, rounds);
@@ -134,10 +135,98 @@ class SequentialInsertion {
     workers_.clear();
     owner_.reset();
     logged_ = {};
-    write_back();
+  }
+
+  // The records back into the mesh's arrays, compacted: the alive tets in slot order at
+  // [0, alive), neighbours renumbered, capacity exactly alive (the output stage then has
+  // nothing to compact). Frees the records.
+  void write_back() {
+    const std::int64_t n = slots();
+    par::Context<B>& ctx = mesh_.context();
+    par::Buffer<tid_t, B> slot(ctx, static_cast<std::size_t>(n + 1));
+    tid_t* sl = slot.data();
+    const Cell* cs = cells_.data();
+    par::parallel_for(ctx, n, [=](std::int64_t t) { sl[t] = cs[t].v[0] != kNoVertex ? 1 : 0; });
+    const std::int64_t alive = par::counts_to_offsets(ctx, sl, static_cast<std::size_t>(n));
+    mesh_.set_size(0);
+    mesh_.reserve(alive);
+    mesh_.set_size(alive);
+    const mesh::MeshView mv = mesh_.view();
+    par::parallel_for(ctx, n, [=](std::int64_t t) {
+      if (sl[t + 1] == sl[t]) return;
+      const Cell& c = cs[t];
+      const std::int64_t d = sl[t];
+      for (int i = 0; i < 4; ++i) {
+        mv.tet[d].v[i] = c.v[i];
+        mv.opp_t[4 * d + i] = c.n[i] >= 0 ? sl[tet_of(c.n[i])] : kNoTet;
+        mv.opp_f[4 * d + i] = static_cast<std::uint8_t>(c.n[i] >= 0 ? face_of(c.n[i]) : 0);
+        mv.fflag[4 * d + i] = 0;
+      }
+      mv.state[d] = mesh::kAlive;
+    });
+    cells_.release();
+  }
+
+  // Instead of write_back() and the mesh's extraction (splay::GDel3D::extract): the
+  // finite tets of the exact Delaunay triangulation straight from the records, vertices
+  // as sid[v] (the input ids), neighbours numbered, -1 across the hull. Tets with ∞ are
+  // dropped, and exactly flat ones (orient3d = 0: only on coplanar hull faces, docs/
+  // gdel3d.md); a face of a flat tet's neighbour is matched by its vertices
+  // (mesh::match_open_faces), or is a hull face. Returns the flat tets dropped; adds the
+  // exact orientations to `exact`. Frees the records.
+  std::int64_t extract(par::Buffer<vid_t, B>& tets, par::Buffer<std::int32_t, B>& nbr, const std::int64_t* sid,
+                       std::int64_t& exact) {
+    using I64 = std::int64_t;
+    constexpr std::int8_t kDead = -1, kInfTet = -100;  // else: the orientation (> 0 kept, 0 flat)
+    const I64 n = slots();
+    par::Context<B>& ctx = mesh_.context();
+    const Cell* cs = cells_.data();
+    const Geo g = g_;
+    par::Buffer<std::int8_t, B> sign(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));
+    std::int8_t* sg = sign.data();
+    exact += par::two_stage_signs(
+        ctx, n, sg,
+        [=](I64 t) -> std::int8_t {
+          const vid_t* v = cs[t].v;
+          if (v[0] == kNoVertex) return kDead;
+          if (Geo::inf_slot(v, g.inf) >= 0) return kInfTet;
+          const int s = geom::orient3d_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]));
+          return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
+        },
+        [=](I64 t, double* work) -> std::int8_t {
+          const vid_t* v = cs[t].v;
+          return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
+        },
+        geom::kPredicateWork);
+    par::Buffer<tid_t, B> num(ctx, static_cast<std::size_t>(n + 1));
+    tid_t* nm = num.data();
+    par::parallel_for(ctx, n, [=](I64 t) { nm[t] = sg[t] > 0 ? 1 : 0; });
+    const I64 nkeep = par::counts_to_offsets(ctx, nm, static_cast<std::size_t>(n));
+    const I64 flat = par::count_indices(ctx, static_cast<std::size_t>(n), [=](I64 t) { return sg[t] == 0; });
+    tets.resize(static_cast<std::size_t>(4 * nkeep));
+    nbr.resize(static_cast<std::size_t>(4 * nkeep));
+    vid_t* op = tets.data();
+    std::int32_t* np = nbr.data();
+    par::parallel_for(ctx, n, [=](I64 t) {
+      if (nm[t + 1] == nm[t]) return;
+      const Cell& c = cs[t];
+      const I64 d = nm[t];
+      for (int i = 0; i < 4; ++i) {
+        op[4 * d + i] = static_cast<vid_t>(sid[c.v[i]]);
+        const tid_t u = tet_of(c.n[i]);  // a closed mesh: every face has a neighbour
+        np[4 * d + i] = sg[u] == kInfTet ? -1 : nm[u + 1] != nm[u] ? static_cast<std::int32_t>(nm[u]) : -2;
+      }
+    });
+    num.release();
+    sign.release();
+    cells_.release();
+    if (flat > 0) mesh::match_open_faces(ctx, tets, nbr, nkeep);
+    return flat;
   }
 
   const SequentialCounts& counts() const { return c_; }
+  // The records hold the tets (until write_back() or extract()).
+  bool holds_tets() const { return cells_.size() > 0; }
 
  private:
   static constexpr std::int64_t kChunk = 1024;           // slots a thread takes at once
@@ -150,6 +239,8 @@ class SequentialInsertion {
   static tid_t tet_of(std::int32_t f) { return f >> 2; }
   static int face_of(std::int32_t f) { return f & 3; }
   struct Conflict {};  // a tet another thread holds, or no room left in a parallel round
+
+  std::int64_t slots() const { return std::min<std::int64_t>(hwm_, static_cast<std::int64_t>(cells_.size())); }
 
   // BRIO order; rounds gets the start of every round and the end.
   static std::vector<vid_t> brio_order(const vid_t* todo, std::int64_t n, std::vector<std::int64_t>& rounds) {
@@ -234,36 +325,6 @@ class SequentialInsertion {
       for (vid_t q : w.deferred_) w0.insert(q);
       w.deferred_.clear();
     }
-  }
-
-  // The records back into the mesh's arrays, compacted: the alive tets in slot order at
-  // [0, alive), neighbours renumbered, capacity exactly alive (the output stage then has
-  // nothing to compact).
-  void write_back() {
-    const std::int64_t n = std::min<std::int64_t>(hwm_, static_cast<std::int64_t>(cells_.size()));
-    par::Context<B>& ctx = mesh_.context();
-    par::Buffer<tid_t, B> slot(ctx, static_cast<std::size_t>(n + 1));
-    tid_t* sl = slot.data();
-    const Cell* cs = cells_.data();
-    par::parallel_for(ctx, n, [=](std::int64_t t) { sl[t] = cs[t].v[0] != kNoVertex ? 1 : 0; });
-    const std::int64_t alive = par::counts_to_offsets(ctx, sl, static_cast<std::size_t>(n));
-    mesh_.set_size(0);
-    mesh_.reserve(alive);
-    mesh_.set_size(alive);
-    const mesh::MeshView mv = mesh_.view();
-    par::parallel_for(ctx, n, [=](std::int64_t t) {
-      if (sl[t + 1] == sl[t]) return;
-      const Cell& c = cs[t];
-      const std::int64_t d = sl[t];
-      for (int i = 0; i < 4; ++i) {
-        mv.tet[d].v[i] = c.v[i];
-        mv.opp_t[4 * d + i] = c.n[i] >= 0 ? sl[tet_of(c.n[i])] : kNoTet;
-        mv.opp_f[4 * d + i] = static_cast<std::uint8_t>(c.n[i] >= 0 ? face_of(c.n[i]) : 0);
-        mv.fflag[4 * d + i] = 0;
-      }
-      mv.state[d] = mesh::kAlive;
-    });
-    cells_.release();
   }
 
   // One thread's state. Outside a parallel round only workers_[0] runs, without taking

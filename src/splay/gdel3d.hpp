@@ -25,6 +25,7 @@
 
 #include "flip/flip_kernels.hpp"
 #include "flip/local_delaunay.hpp"
+#include "mesh/open_faces.hpp"
 #include "mesh/tet_mesh.hpp"
 #include "splay/splayer.hpp"
 
@@ -439,7 +440,7 @@ class GDel3D {
     tnum.release();
     flat.release();
     sp_.write_star_tets(snum, op, np, nkeep);
-    sp_.match_faces(tets, nbr, nout);
+    mesh::match_open_faces(ctx_, tets, nbr, nout);
   }
 
  private:

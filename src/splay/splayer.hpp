@@ -742,7 +742,7 @@ class Splayer {
   }
 
   // Writes the tets planned by plan_star_tets at tets[4 * (base + num[q])], their
-  // neighbours as -2 (to be matched by match_faces).
+  // neighbours as -2 (to be matched by mesh::match_open_faces).
   void write_star_tets(const Buffer<I64, B>& num, vid_t* tets, std::int32_t* nbr, I64 base) {
     const I64* np = num.data();
     const StarView sv = view();
@@ -755,68 +755,6 @@ class Splayer {
         for (int k = 0; k < 3; ++k) tets[4 * d + 1 + k] = sv.tri[q].v[k];
         for (int k = 0; k < 4; ++k) nbr[4 * d + k] = -2;
       }
-    });
-  }
-
-  // Resolves neighbours marked -2 by sorting their faces' vertex keys; a face without
-  // a partner is a hull face (-1).
-  void match_faces(Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr, I64 nout) {
-    std::int32_t* np = nbr.data();
-    const vid_t* tp = tets.data();
-    auto unmatched = [=] GDEL_HD(I64 f) { return np[f] == -2; };
-    // counted first: the open faces are those of star tets, few beside the 4 nout faces
-    const std::size_t k = static_cast<std::size_t>(par::count_indices(ctx_, static_cast<std::size_t>(4 * nout), unmatched));
-    if (k == 0) return;
-    Buffer<I64, B> open(ctx_, k);
-    par::select_indices(ctx_, static_cast<std::size_t>(4 * nout), open.data(), unmatched);
-    const I64* fp = open.data();
-    auto face = [=] GDEL_HD(I64 f, vid_t* w) {
-      const I64 t = f >> 2;
-      const int i = static_cast<int>(f & 3);
-      vid_t a = tp[4 * t + face_vertex(i, 0)], b = tp[4 * t + face_vertex(i, 1)], c = tp[4 * t + face_vertex(i, 2)];
-      if (a > b) { vid_t x = a; a = b; b = x; }
-      if (b > c) { vid_t x = b; b = c; c = x; }
-      if (a > b) { vid_t x = a; a = b; b = x; }
-      w[0] = a; w[1] = b; w[2] = c;
-    };
-    // two stable passes: by c, then by (a, b)
-    Buffer<U64, B> key(ctx_, k);
-    Buffer<I64, B> val(ctx_, k);
-    U64* kp = key.data();
-    I64* vp = val.data();
-    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
-      vid_t w[3];
-      face(fp[j], w);
-      kp[j] = static_cast<std::uint32_t>(w[2]);
-      vp[j] = fp[j];
-    });
-    par::sort_pairs(ctx_, kp, vp, k);
-    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
-      vid_t w[3];
-      face(vp[j], w);
-      kp[j] = pair_key(w[0], w[1]);
-    });
-    par::sort_pairs(ctx_, kp, vp, k);
-    const I64 kk = static_cast<I64>(k);
-    par::parallel_for(ctx_, kk, [=] GDEL_HD(I64 j) {
-      vid_t w[3], x[3];
-      face(vp[j], w);
-      bool paired = false;
-      if (j + 1 < kk) {
-        face(vp[j + 1], x);
-        if (x[0] == w[0] && x[1] == w[1] && x[2] == w[2]) {
-          np[vp[j]] = static_cast<std::int32_t>(vp[j + 1] >> 2);
-          paired = true;
-        }
-      }
-      if (j > 0) {
-        face(vp[j - 1], x);
-        if (x[0] == w[0] && x[1] == w[1] && x[2] == w[2]) {
-          np[vp[j]] = static_cast<std::int32_t>(vp[j - 1] >> 2);
-          paired = true;
-        }
-      }
-      if (!paired) np[vp[j]] = -1;
     });
   }
 

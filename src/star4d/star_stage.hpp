@@ -48,6 +48,7 @@
 #include <stdexcept>
 
 #include "parallel/atomic.hpp"
+#include "mesh/open_faces.hpp"
 #include "splay/splayer.hpp"
 
 namespace gdel::star4d {
@@ -242,7 +243,7 @@ class StarStage {
     tets.resize(static_cast<std::size_t>(4 * n));
     nbr.resize(static_cast<std::size_t>(4 * n));
     sp_.write_star_tets(num, tets.data(), nbr.data(), 0);
-    sp_.match_faces(tets, nbr, n);
+    mesh::match_open_faces(ctx_, tets, nbr, n);
     res_.tets = n;
   }
 
