@@ -204,6 +204,7 @@ class GFlip3D {
       if (const char* e = std::getenv("GDEL_CPU_THREADS")) k.threads = static_cast<unsigned>(std::max(0, std::atoi(e)));
       if (const char* e = std::getenv("GDEL_CPU_PARALLEL_MIN")) k.parallel_min = std::max(1LL, std::atoll(e));
       if (const char* e = std::getenv("GDEL_CPU_FORCE_CONFLICT")) k.force_conflict = std::max(0LL, std::atoll(e));
+      if (const char* e = std::getenv("GDEL_CPU_HOLD")) k.hold = std::max(1LL, std::atoll(e));
       seq_ = std::make_unique<SequentialInsertion<B>>(mesh_, geo(), initial_slots(), k);
       seq_->run(todo_.data(), static_cast<std::int64_t>(todo_.size()));
       const SequentialCounts& c = seq_->counts();

@@ -25,11 +25,11 @@
 // are threads (spatially compact regions); each thread inserts its piece's points one at
 // a time, as above, while the others do theirs. A point's insertion is a transaction: the
 // thread takes every tet it reads or writes (an owner byte per block of 16 tets,
-// compare-and-swap), logs each tet before its first write, and releases them when the
-// point is in. Finding
-// a tet taken by another thread (only near the pieces' borders), it restores the logged
-// tets and defers the point; the deferred points are inserted after the round by one
-// thread. Each insertion is thus atomic with respect to the others, so the result is the
+// compare-and-swap), logs each tet before its first write, and releases them a few
+// points later (Knobs::hold: its next points mostly touch the same blocks) or at once
+// after a conflict. Finding a tet taken by another thread (only near the pieces'
+// borders), it restores the logged tets and defers the point; the deferred points are
+// inserted after the round by one thread. Each insertion is thus atomic with respect to the others, so the result is the
 // one a sequential insertion in some order gives: the unique Delaunay triangulation of
 // the perturbed points, whatever the threads' timing (only the tets' slots differ from
 // run to run; Options::canonical_order fixes the output order).
@@ -79,11 +79,14 @@ class SequentialInsertion {
   // (GDEL_CPU_THREADS; 0: OpenMP's count, as the CPU backend's other loops: OMP_NUM_THREADS
   // or the hardware's), the least round run on several threads
   // (GDEL_CPU_PARALLEL_MIN), and a conflict forced at every k-th tet taken in a parallel
-  // round (GDEL_CPU_FORCE_CONFLICT; 0: none), which exercises the undo.
+  // round (GDEL_CPU_FORCE_CONFLICT; 0: none), which exercises the undo, and the insertions
+  // a thread keeps its blocks for (GDEL_CPU_HOLD; bench/RESULTS.md session 16: 4 saves
+  // ≈ 2 % of compare-and-swaps over 1, at 1.6x the deferred points; 64 defers 14 %).
   struct Knobs {
     unsigned threads = 0;
     std::int64_t parallel_min = 1 << 12;
     std::int64_t force_conflict = 0;
+    std::int64_t hold = 4;
   };
 
   SequentialInsertion(mesh::TetMesh<B>& mesh, const Geo& g, std::int64_t reserve, Knobs k = {})
@@ -310,6 +313,7 @@ class SequentialInsertion {
       me.newest_ = start[w];
       try {
         for (std::int64_t k = cut[w]; k < cut[w + 1]; ++k) me.try_insert(pts[k]);
+        me.release_all();
       } catch (...) {
         err[w] = std::current_exception();
       }
@@ -391,6 +395,7 @@ class SequentialInsertion {
       own_ = s_->owner_.get();
       logged_ = s_->logged_.data();
       force_ = parallel ? s_->knobs_.force_conflict : 0;
+      hold_ = s_->knobs_.hold;
     }
 
     // --- slots -------------------------------------------------------------------------
@@ -614,6 +619,7 @@ class SequentialInsertion {
 
     // In a parallel round: insert p as a transaction; on a conflict, undo and defer it.
     void try_insert(vid_t p) {
+      const std::size_t ndef0 = deferred_.size();
       const tid_t newest0 = newest_;
       const SequentialCounts c0 = c_;
       try {
@@ -633,8 +639,12 @@ class SequentialInsertion {
       claimed_.clear();
       for (const auto& u : undo_) logged_[static_cast<std::size_t>(u.first)] = 0;
       undo_.clear();
+      if (deferred_.size() != ndef0 || ++since_release_ >= hold_) release_all();
+    }
+    void release_all() {
       for (tid_t b : held_) own_[static_cast<std::size_t>(b)].store(0, std::memory_order_release);
       held_.clear();
+      since_release_ = 0;
     }
 
     SequentialInsertion* s_;
@@ -652,6 +662,7 @@ class SequentialInsertion {
     std::vector<std::pair<tid_t, Cell>> undo_;
     std::vector<vid_t> deferred_;
     std::int64_t takes_ = 0, force_ = 0;  // Knobs::force_conflict
+    std::int64_t hold_ = 1, since_release_ = 0;  // Knobs::hold; insertions since the blocks were released
     bool par_ = false;                    // in a parallel round: take, log
     Cell* cs_ = nullptr;                  // the records (s_->cells_; moved only by a grow)
     std::atomic<std::uint8_t>* own_ = nullptr;

@@ -99,7 +99,8 @@ inline void gdel3d_host_star_case(Backend b) {
 // One point per round (the CPU backend's default, flip/sequential.hpp) on several
 // threads: each insertion is a transaction that is undone and deferred when it meets
 // another thread's tets. Forced here with 4 threads, every round of over 64 points run
-// in parallel, and a conflict forced at every 50th tet taken (GDEL_CPU_*): insertions
+// in parallel, a conflict forced at every 50th tet taken, blocks kept for 4 points or
+// released after each (GDEL_CPU_*): insertions
 // must have been deferred, and the triangulation must be the one of a single thread and
 // of the parallel rounds + repair, exactly Delaunay. Uniform, grid (exact ties) and
 // sphere (cospherical) points.
@@ -118,6 +119,9 @@ inline void gdel3d_threads_case(Backend b) {
     const Triangulation four = delaunay(pts, o);
     ::unsetenv("GDEL_CPU_FORCE_CONFLICT");
     const Triangulation natural = delaunay(pts, o);  // conflicts only where threads meet
+    ::setenv("GDEL_CPU_HOLD", "1", 1);               // blocks released after every point
+    const Triangulation hold1 = delaunay(pts, o);
+    ::unsetenv("GDEL_CPU_HOLD");
     ::unsetenv("GDEL_CPU_PARALLEL_MIN");
     ::unsetenv("GDEL_CPU_THREADS");
     o.cpu_rounds = true;
@@ -131,6 +135,8 @@ inline void gdel3d_threads_case(Backend b) {
     EXPECT_EQ(four.tets, one.tets);
     EXPECT_EQ(four.neighbors, one.neighbors);
     EXPECT_EQ(natural.tets, one.tets);
+    EXPECT_EQ(hold1.tets, one.tets);
+    EXPECT_EQ(hold1.neighbors, one.neighbors);
     EXPECT_EQ(rounds.tets, one.tets);
     EXPECT_EQ(rounds.neighbors, one.neighbors);
   }
