@@ -83,6 +83,15 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   st.algorithm = opt.algorithm == Algorithm::gstar4d ? "gstar4d" : exact ? "gdel3d" : "gflip3d";
   const I64 n = static_cast<I64>(points.size() / 3);
   st.points = n;
+  // the results to the caller, the output stage's time (from t_out), the run's totals
+  auto finish = [&](Buffer<vid_t, B>& tv, Buffer<std::int32_t, B>& tn, auto t_out) {
+    sink.tets(tv, tn, out);
+    par::mark(ctx, "output: results to caller");
+    st.stages.push_back({"output", since(t_out)});
+    st.peak_bytes = static_cast<I64>(ctx.memory().peak());
+    st.seconds = since(t_start);
+    report_profile(ctx, st);
+  };
 
   // --- prepare: upload, duplicates, spatial order ------------------------------------
   auto t0 = std::chrono::steady_clock::now();
@@ -110,11 +119,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     star4d::gstar4d(ctx, P, sid, m, lo, hi, opt, st, tv, tn);
     t0 = std::chrono::steady_clock::now();
     to_input_ids(ctx, tv, sid);
-    sink.tets(tv, tn, out);
-    st.stages.push_back({"output", since(t0)});
-    st.peak_bytes = static_cast<I64>(ctx.memory().peak());
-    st.seconds = since(t_start);
-    report_profile(ctx, st);
+    finish(tv, tn, t0);
     return out;
   }
 
@@ -149,12 +154,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     Buffer<std::int32_t, B> tn(ctx);
     if (alg.extract_one_point_per_round(tv, tn, sid.data(), st.flat_tets_removed)) {
       par::mark(ctx, "one point per round: extract");
-      sink.tets(tv, tn, out);
-      par::mark(ctx, "output: results to caller");
-      st.stages.push_back({"output", since(t0)});
-      st.peak_bytes = static_cast<I64>(ctx.memory().peak());
-      st.seconds = since(t_start);
-      report_profile(ctx, st);
+      finish(tv, tn, t0);
       return out;
     }
   }
@@ -194,12 +194,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     st.flat_tets_removed = r.flat_removed;
     to_input_ids(ctx, tv, sid);
     par::mark(ctx, "output: input ids");
-    sink.tets(tv, tn, out);
-    par::mark(ctx, "output: results to caller");
-    st.stages.push_back({"output", since(t1)});
-    st.peak_bytes = static_cast<I64>(ctx.memory().peak());
-    st.seconds = since(t_start);
-    report_profile(ctx, st);
+    finish(tv, tn, t1);
     return out;
   }
   // failed vertices: vertices of facets that are not locally Delaunay (the repair's test)
@@ -246,12 +241,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   tv.resize(static_cast<std::size_t>(4 * nfin));
   tn.resize(static_cast<std::size_t>(4 * nfin));
   par::mark(ctx, "output: finite tets, input ids");
-  sink.tets(tv, tn, out);
-  par::mark(ctx, "output: results to caller");
-  st.peak_bytes = static_cast<I64>(ctx.memory().peak());
-  st.stages.push_back({"output", since(t0)});
-  st.seconds = since(t_start);
-  report_profile(ctx, st);
+  finish(tv, tn, t0);
   return out;
 }
 
