@@ -497,10 +497,10 @@ case "$plan" in
     step predicates 90 "$tbin/gpu_predicates"
     step star_stage 120 "$tbin/gpu_star_stage"
     step gdel3d 150 "$tbin/gpu_gdel3d"
+    ;;
+  s16b)  # the rest of the regression tests (two calls: the carry limit); GPU uniform as in s15; CPU backend on the host's threads with blocks held 4 points (default) and 1, against CGAL
     step gflip3d 120 "$tbin/gpu_gflip3d"
     step hostile 90 "$tbin/gpu_hostile"
-    ;;
-  s16b)  # GPU uniform as in s15; CPU backend on the host's threads with blocks held 4 points (default) and 1, against CGAL
     bench s16gpu 90 --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
     bench s16cpu 120 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal,cgal-par --repeat 3
     GDEL_CPU_HOLD=1 bench s16cpu_hold1 60 --dist uniform --n 1000000 --methods gdel3d-cpu --repeat 3

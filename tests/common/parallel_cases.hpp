@@ -271,7 +271,9 @@ void distinct_order_cases(par::Context<B>& ctx) {
         EXPECT_TRUE(less(oh[k - 1], oh[k])) << k;
       }
     }
-    if (variant >= 2) EXPECT_GT(ties, 100);  // the clusters share cells: the tie path ran
+    if (variant >= 2) {
+      EXPECT_GT(ties, 100);  // the clusters share cells: the tie path ran
+    }
   }
 }
 
