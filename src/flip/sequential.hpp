@@ -435,14 +435,6 @@ class SequentialInsertion {
       c = Cell{{kNoVertex, kNoVertex, kNoVertex, kNoVertex}, {-1, -1, -1, -1}};
       (par_ ? freed_ : free_).push_back(t);
     }
-    GDEL_FORCEINLINE void link(tid_t t, int i, tid_t u, int j) {
-      wr(t).n[i] = u < 0 ? -1 : (u << 2 | j);
-      if (u >= 0) wr(u).n[j] = t << 2 | i;
-    }
-    void set_vertices(tid_t t, const vid_t* v) {
-      Cell& c = wr(t);
-      for (int k = 0; k < 4; ++k) c.v[k] = v[k];
-    }
     vid_t apex(const Cell& c, int i) { return c.n[i] < 0 ? kNoVertex : rd(tet_of(c.n[i])).v[face_of(c.n[i])]; }
 
     // --- location: remembering stochastic visibility walk (Devillers-Pion-Teillaud) -----
@@ -488,14 +480,16 @@ class SequentialInsertion {
       const Cell oc = rd(o);
       tid_t c[4] = {o, 0, 0, 0};
       for (int i = 1; i < 4; ++i) c[i] = claim();
+      Cell* cc[4];  // taken and logged once (after the claims: a claim may move the records)
+      for (int i = 0; i < 4; ++i) cc[i] = &wr(c[i]);
       for (int i = 0; i < 4; ++i) {
-        vid_t cv[4];
-        split_child_vertices(oc.v, p, i, cv);
-        set_vertices(c[i], cv);
-        link(c[i], 3, oc.n[i] < 0 ? -1 : tet_of(oc.n[i]), face_of(oc.n[i]));
+        Cell& x = *cc[i];
+        split_child_vertices(oc.v, p, i, x.v);
+        x.n[3] = oc.n[i];
+        back(oc.n[i], c[i], 3);
         for (int k = 0; k < 3; ++k) {
           const int j = face_vertex(i, k);
-          wr(c[i]).n[k] = c[j] << 2 | split_shared_face(j, i);
+          x.n[k] = c[j] << 2 | split_shared_face(j, i);
         }
         stack_.push_back(c[i]);
       }
@@ -510,7 +504,12 @@ class SequentialInsertion {
         if (c.v[k] == w) l = k;
       return c.n[l];
     }
-    void attach(tid_t s, int j, std::int32_t e) { link(s, j, e < 0 ? -1 : tet_of(e), face_of(e)); }
+    // The back link of the tet across a new tet's face: facet e (-1: none) gets (t, i).
+    // A flip's outer neighbours are never among its own tets, so the new tets' records
+    // are written through references taken once.
+    void back(std::int32_t e, tid_t t, int i) {
+      if (e >= 0) wr(tet_of(e)).n[face_of(e)] = t << 2 | i;
+    }
     // 2-3: ts = (b, u), b = (face c0 c1 c2, v), u = (face, x); new N_k = (c_k, c_k+1, x,
     // v). N_k's face 0 is N_k+1's face 1; its face 2 (opposite x) was b's face opposite
     // c_k+2, its face 3 (opposite v) u's.
@@ -522,14 +521,18 @@ class SequentialInsertion {
         eu[k] = across(U, r.v[(k + 2) % 3]);
       }
       const tid_t s[3] = {ts[0], ts[1], claim()};
+      Cell* sc[3] = {&wr(s[0]), &wr(s[1]), &wr(s[2])};
       vid_t nv[3][4];
       flip_new_tets(r, nv);
-      for (int k = 0; k < 3; ++k) set_vertices(s[k], nv[k]);
       for (int k = 0; k < 3; ++k) {
-        wr(s[k]).n[0] = s[(k + 1) % 3] << 2 | 1;
-        wr(s[k]).n[1] = s[(k + 2) % 3] << 2 | 0;
-        attach(s[k], 2, eb[k]);
-        attach(s[k], 3, eu[k]);
+        Cell& x = *sc[k];
+        for (int q = 0; q < 4; ++q) x.v[q] = nv[k][q];
+        x.n[0] = s[(k + 1) % 3] << 2 | 1;
+        x.n[1] = s[(k + 2) % 3] << 2 | 0;
+        x.n[2] = eb[k];
+        x.n[3] = eu[k];
+        back(eb[k], s[k], 2);
+        back(eu[k], s[k], 3);
         stack_.push_back(s[k]);
       }
       newest_ = s[2];
@@ -553,16 +556,22 @@ class SequentialInsertion {
       }
       const tid_t s[2] = {ts[0], ts[1]};
       kill(ts[2]);
+      Cell& na = wr(s[0]);
+      Cell& nb = wr(s[1]);
       vid_t nv[3][4];
       flip_new_tets(r, nv);
-      set_vertices(s[0], nv[0]);
-      set_vertices(s[1], nv[1]);
-      wr(s[0]).n[3] = s[1] << 2 | 3;
-      wr(s[1]).n[3] = s[0] << 2 | 3;
+      for (int q = 0; q < 4; ++q) {
+        na.v[q] = nv[0][q];
+        nb.v[q] = nv[1][q];
+      }
+      na.n[3] = s[1] << 2 | 3;
+      nb.n[3] = s[0] << 2 | 3;
       constexpr int kInB[3] = {1, 0, 2};  // local index of r_j in B
       for (int j = 0; j < 3; ++j) {
-        attach(s[0], j, ea[j]);
-        attach(s[1], kInB[j], eb[j]);
+        na.n[j] = ea[j];
+        nb.n[kInB[j]] = eb[j];
+        back(ea[j], s[0], j);
+        back(eb[j], s[1], kInB[j]);
       }
       stack_.push_back(s[0]);
       stack_.push_back(s[1]);
