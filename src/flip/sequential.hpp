@@ -49,7 +49,6 @@
 #include <exception>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -318,10 +317,14 @@ class SequentialInsertion {
         err[w] = std::current_exception();
       }
     };
-    std::vector<std::thread> th;
-    for (unsigned w = 1; w < threads_; ++w) th.emplace_back(job, w);
-    job(0);
-    for (std::thread& t : th) t.join();
+    // OpenMP's team, not threads of our own: its idle workers would otherwise spin beside
+    // them for a while after every parallel loop (bench/RESULTS.md, session 16). A team
+    // smaller than asked for runs several pieces per thread, one after the other.
+    const int nt = static_cast<int>(threads_);
+#pragma omp parallel num_threads(nt)
+    {
+      for (int w = omp_get_thread_num(); w < nt; w += omp_get_num_threads()) job(static_cast<unsigned>(w));
+    }
     w0.begin(false);
     for (std::exception_ptr& e : err)
       if (e) std::rethrow_exception(e);
