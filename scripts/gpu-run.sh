@@ -492,7 +492,7 @@ case "$plan" in
     bench s15gpu 90 --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
     bench s15cpu 120 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal,cgal-par --repeat 3
     ;;
-  s16a)  # session 16's GPU-facing changes: filters' cheap bound (predicates vs GMP), one-sort prepare (parallel), match_open_faces (star stage), the regression tests
+  s16a)  # session 16's GPU-facing changes: filters' cheap bound (predicates vs GMP), one-sort prepare (parallel), match_open_faces (star stage; its test binary has crashed at start since session 11: RESULTS 2026-11-24), the regression tests
     step parallel 60 "$tbin/gpu_parallel"
     step predicates 90 "$tbin/gpu_predicates"
     step star_stage 120 "$tbin/gpu_star_stage"
@@ -501,9 +501,17 @@ case "$plan" in
   s16b)  # the rest of the regression tests (two calls: the carry limit); GPU uniform as in s15; CPU backend on the host's threads with blocks held 4 points (default) and 1, against CGAL
     step gflip3d 120 "$tbin/gpu_gflip3d"
     step hostile 90 "$tbin/gpu_hostile"
+    step gstar4d_million 60 "$tbin/gpu_gstar4d" --gtest_filter='*MillionPoints*'
     bench s16gpu 90 --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
     bench s16cpu 120 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal,cgal-par --repeat 3
     GDEL_CPU_HOLD=1 bench s16cpu_hold1 60 --dist uniform --n 1000000 --methods gdel3d-cpu --repeat 3
+    ;;
+  s16c)  # the other generators at 10^6 on the GPU (targets table), and the CPU backend with blocks held 8 points
+    bench s16gen 200 --dist gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_CPU_HOLD=8 bench s16cpu_hold8 60 --dist uniform --n 1000000 --methods gdel3d-cpu --repeat 3
+    ;;
+  s16d)  # the CPU backend (a CPU-only gdel-bench built here) on the host's 16 threads after the OpenMP team change, against CGAL
+    bench s16d_cpu 150 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal,cgal-par --repeat 3
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
