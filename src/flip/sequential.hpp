@@ -46,7 +46,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
-#include <exception>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -58,6 +57,7 @@
 #include "gdel/errors.hpp"
 #include "mesh/open_faces.hpp"
 #include "mesh/tet_mesh.hpp"
+#include "parallel/host_threads.hpp"
 
 namespace gdel::flip {
 
@@ -305,29 +305,17 @@ class SequentialInsertion {
     w0.begin(false);  // the records may have moved
     std::vector<tid_t> start(threads_);
     for (unsigned w = 0; w < threads_; ++w) start[w] = cut[w] < cut[w + 1] ? w0.locate(pts[cut[w]], w0.newest_) : w0.newest_;
-    std::vector<std::exception_ptr> err(threads_);
-    auto job = [&](unsigned w) {
-      Worker& me = workers_[w];
-      me.begin(true);
-      me.newest_ = start[w];
-      try {
-        for (std::int64_t k = cut[w]; k < cut[w + 1]; ++k) me.try_insert(pts[k]);
-        me.release_all();
-      } catch (...) {
-        err[w] = std::current_exception();
-      }
-    };
-    // OpenMP's team, not threads of our own: its idle workers would otherwise spin beside
-    // them for a while after every parallel loop (bench/RESULTS.md, session 16). A team
-    // smaller than asked for runs several pieces per thread, one after the other.
-    const int nt = static_cast<int>(threads_);
-#pragma omp parallel num_threads(nt)
-    {
-      for (int w = omp_get_thread_num(); w < nt; w += omp_get_num_threads()) job(static_cast<unsigned>(w));
-    }
+    par::on_host_threads(
+        threads_,
+        [&](std::size_t w) {
+          Worker& me = workers_[w];
+          me.begin(true);
+          me.newest_ = start[w];
+          for (std::int64_t k = cut[w]; k < cut[w + 1]; ++k) me.try_insert(pts[k]);
+          me.release_all();
+        },
+        static_cast<int>(threads_));
     w0.begin(false);
-    for (std::exception_ptr& e : err)
-      if (e) std::rethrow_exception(e);
     for (Worker& w : workers_) {
       for (vid_t q : w.deferred_) w0.insert(q);
       w.deferred_.clear();

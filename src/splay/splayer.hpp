@@ -26,14 +26,13 @@
 #include <functional>
 #include <cstdint>
 #include <stdexcept>
-#include <thread>
 #include <atomic>
-#include <mutex>
 #include <exception>
 #include <vector>
 
 #include "parallel/atomic.hpp"
 #include "parallel/exact_batch.hpp"
+#include "parallel/host_threads.hpp"
 #include "parallel/primitives.hpp"
 #include "splay/flipflop.hpp"
 #include "splay/star.hpp"
@@ -500,29 +499,6 @@ class Splayer {
   }
   // Runs job(h) for h in [0, n) on the host's threads (at most one per job), the calling
   // thread included.
-  template <class Job>
-  // An exception in a job (e.g. host memory exhausted) stops the hand-out of jobs and is
-  // rethrown here once every thread has joined (not std::terminate from a thread).
-  static void on_host_threads(std::size_t n, Job job) {
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr err;
-    std::mutex err_mutex;
-    auto worker = [&] {
-      try {
-        for (std::size_t h; (h = next.fetch_add(1)) < n;) job(h);
-      } catch (...) {
-        next.store(n);
-        const std::lock_guard<std::mutex> lock(err_mutex);
-        if (!err) err = std::current_exception();
-      }
-    };
-    const std::size_t nthreads = std::min<std::size_t>(n, std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> threads;
-    for (std::size_t t = 1; t < nthreads; ++t) threads.emplace_back(worker);
-    worker();
-    for (std::thread& t : threads) t.join();
-    if (err) std::rethrow_exception(err);
-  }
   template <class T>
   void get(T* dst, const T* src, std::size_t count) {
     par::detail::Memory<B>::to_host(ctx_, dst, src, count * sizeof(T));
@@ -564,7 +540,7 @@ class Splayer {
   }
   void run_host_jobs(HostJobs& H, U64* gp, I64* up, std::int32_t* ffp, I64 ff_cap) {
     const flip::Geo& hg = host_geo_.g;
-    on_host_threads(H.size(), [&](std::size_t h) {
+    par::on_host_threads(H.size(), [&](std::size_t h) {
       std::vector<double> work(geom::kPredicateWork);
       HostJob& J = H[h];
       I64 gk = 0;
@@ -620,7 +596,7 @@ class Splayer {
   }
   void run_insert_jobs(std::vector<InsertJob>& jobs, U64* gp, I64* up) {
     const flip::Geo& hg = host_geo_.g;
-    on_host_threads(jobs.size(), [&](std::size_t h) {
+    par::on_host_threads(jobs.size(), [&](std::size_t h) {
       std::vector<double> work(geom::kPredicateWork);
       InsertJob& J = jobs[h];
       std::int32_t nonpos = 0;
