@@ -513,6 +513,12 @@ case "$plan" in
   s16d)  # the CPU backend (a CPU-only gdel-bench built here) on the host's 16 threads after the OpenMP team change, against CGAL
     bench s16d_cpu 150 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal,cgal-par --repeat 3
     ;;
+  s16e)  # the same, session 15's last CPU build (gdel-bench-old, b63c253) and this one in one call, alternating
+    for r in 1 2; do
+      step "s16e_old$r" 60 "$bin/gdel-bench-old" --dist uniform --n 1000000 --methods gdel3d-cpu,cgal-par --repeat 3
+      bench "s16e_new$r" 60 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal-par --repeat 3
+    done
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
