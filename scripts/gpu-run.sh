@@ -519,6 +519,12 @@ case "$plan" in
       bench "s16e_new$r" 60 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal-par --repeat 3
     done
     ;;
+  s16f)  # after par::on_host_threads (the splayer's host jobs on OpenMP's team): the regression tests on the final binaries
+    step parallel 60 "$tbin/gpu_parallel"
+    step gdel3d 150 "$tbin/gpu_gdel3d"
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    step hostile 90 "$tbin/gpu_hostile"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
