@@ -227,8 +227,6 @@ class SequentialInsertion {
   }
 
   const SequentialCounts& counts() const { return c_; }
-  // The records hold the tets (until write_back() or extract()).
-  bool holds_tets() const { return cells_.size() > 0; }
 
  private:
   static constexpr std::int64_t kChunk = 1024;           // slots a thread takes at once
@@ -619,12 +617,13 @@ class SequentialInsertion {
 
     // In a parallel round: insert p as a transaction; on a conflict, undo and defer it.
     void try_insert(vid_t p) {
-      const std::size_t ndef0 = deferred_.size();
+      bool conflict = false;
       const tid_t newest0 = newest_;
       const SequentialCounts c0 = c_;
       try {
         insert(p);
       } catch (const Conflict&) {
+        conflict = true;
         for (std::size_t k = undo_.size(); k-- > 0;) cs_[undo_[k].first] = undo_[k].second;
         for (tid_t t : claimed_) free_.push_back(t);
         freed_.clear();
@@ -639,7 +638,7 @@ class SequentialInsertion {
       claimed_.clear();
       for (const auto& u : undo_) logged_[static_cast<std::size_t>(u.first)] = 0;
       undo_.clear();
-      if (deferred_.size() != ndef0 || ++since_release_ >= hold_) release_all();
+      if (conflict || ++since_release_ >= hold_) release_all();
     }
     void release_all() {
       for (tid_t b : held_) own_[static_cast<std::size_t>(b)].store(0, std::memory_order_release);

@@ -24,17 +24,24 @@ GDEL_HD inline bool same_point(const double* X, std::int64_t a, std::int64_t b) 
   return X[3 * a] == X[3 * b] && X[3 * a + 1] == X[3 * b + 1] && X[3 * a + 2] == X[3 * b + 2];
 }
 
+// Sorts the point indices idx[0..n) stably into lexicographic (x, y, z) order: equal
+// points end up consecutive, in their order in idx.
+template <class B>
+void lexicographic_sort(par::Context<B>& ctx, const double* X, std::int64_t* idx, std::int64_t n) {
+  par::Buffer<std::uint64_t, B> key(ctx, static_cast<std::size_t>(n));
+  std::uint64_t* kp = key.data();
+  for (int axis = 2; axis >= 0; --axis) {  // LSD passes: z, y, x (each stable)
+    par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t k) { kp[k] = orderable(X[3 * idx[k] + axis]); });
+    par::sort_pairs(ctx, kp, idx, static_cast<std::size_t>(n), 64);
+  }
+}
+
 // order[k] = index of the k-th point in lexicographic (x, y, z) order; equal points
 // are consecutive and in increasing index order.
 template <class B>
 void lexicographic_order(par::Context<B>& ctx, const double* X, std::int64_t n, std::int64_t* order) {
-  par::Buffer<std::uint64_t, B> key(ctx, static_cast<std::size_t>(n));
-  std::uint64_t* kp = key.data();
   par::sequence(ctx, order, static_cast<std::size_t>(n), std::int64_t(0));
-  for (int axis = 2; axis >= 0; --axis) {  // LSD passes: z, y, x (each stable)
-    par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t k) { kp[k] = orderable(X[3 * order[k] + axis]); });
-    par::sort_pairs(ctx, kp, order, static_cast<std::size_t>(n), 64);
-  }
+  lexicographic_sort(ctx, X, order, n);
 }
 
 // order[k] = index of the k-th point along the 3-D Hilbert curve of the bounding box
@@ -86,11 +93,8 @@ std::int64_t distinct_hilbert_order(par::Context<B>& ctx, const double* X, std::
     std::uint64_t* k2p = k2.data();
     par::select_indices(ctx, static_cast<std::size_t>(n), pp, tied);
     par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) { sp[j] = op[pp[j]]; });
-    // LSD passes, each stable: z, y, x, then the key (the runs, in their order)
-    for (int axis = 2; axis >= 0; --axis) {
-      par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) { k2p[j] = orderable(X[3 * sp[j] + axis]); });
-      par::sort_pairs(ctx, k2p, sp, static_cast<std::size_t>(nt), 64);
-    }
+    // stable passes: the coordinates, then the key (the runs, in their order)
+    lexicographic_sort(ctx, X, sp, nt);
     par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) {
       k2p[j] = sfc::hilbert_key(q, X[3 * sp[j]], X[3 * sp[j] + 1], X[3 * sp[j] + 2]);
     });
