@@ -53,6 +53,16 @@ struct Geo {
     else return orient_fast(a, b, c, d);
   }
 
+  // The plain orientation of four finite vertices, without SoS (0: exactly flat), for
+  // dropping the flat tets of an output: the filter's sign or kUndecided, then exact.
+  GDEL_HD std::int8_t volume_sign_fast(const vid_t* v) const {
+    const int s = geom::orient3d_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]));
+    return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
+  }
+  GDEL_HD std::int8_t volume_sign_exact(const vid_t* v, double* work) const {
+    return static_cast<std::int8_t>(geom::orient3d_exact(p(v[0]), p(v[1]), p(v[2]), p(v[3]), work));
+  }
+
   GDEL_HD static int inf_slot(const vid_t* t, vid_t inf) {
     for (int i = 0; i < 4; ++i)
       if (t[i] == inf) return i;

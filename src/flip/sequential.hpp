@@ -192,13 +192,9 @@ class SequentialInsertion {
           const vid_t* v = cs[t].v;
           if (v[0] == kNoVertex) return kDead;
           if (Geo::inf_slot(v, g.inf) >= 0) return kInfTet;
-          const int s = geom::orient3d_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]));
-          return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
+          return g.volume_sign_fast(v);
         },
-        [=](I64 t, double* work) -> std::int8_t {
-          const vid_t* v = cs[t].v;
-          return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
-        },
+        [=](I64 t, double* work) { return g.volume_sign_exact(cs[t].v, work); },
         geom::kPredicateWork);
     par::Buffer<tid_t, B> num(ctx, static_cast<std::size_t>(n + 1));
     tid_t* nm = num.data();

@@ -382,15 +382,9 @@ class GDel3D {
     res_.exact_evaluations += par::two_stage_signs(
         ctx_, nt, flp,
         [=] GDEL_HD(I64 t) -> std::int8_t {
-          if (!t_candidate(t)) return 0;
-          const vid_t* v = mv.tet[t].v;
-          const int s = geom::orient3d_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]));
-          return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
+          return t_candidate(t) ? g.volume_sign_fast(mv.tet[t].v) : std::int8_t(0);
         },
-        [=] GDEL_HD(I64 t, double* work) -> std::int8_t {
-          const vid_t* v = mv.tet[t].v;
-          return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
-        },
+        [=] GDEL_HD(I64 t, double* work) { return g.volume_sign_exact(mv.tet[t].v, work); },
         geom::kPredicateWork);
     // flp[t] > 0: kept; kInfTet: a tet with the vertex at infinity (read below, after
     // the tets array is gone). Star tets: from the stars, each once.

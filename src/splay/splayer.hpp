@@ -691,14 +691,11 @@ class Splayer {
         ctx_, slots, sfp,
         [=] GDEL_HD(I64 q) -> std::int8_t {
           vid_t v[4] = {0, 0, 0, 0};
-          if (!candidate(q, v)) return 0;
-          const int r = geom::orient3d_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]));
-          return r == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(r);
+          return candidate(q, v) ? g.volume_sign_fast(v) : std::int8_t(0);
         },
         [=] GDEL_HD(I64 q, double* work) -> std::int8_t {
           vid_t v[4] = {0, 0, 0, 0};
-          if (!candidate(q, v)) return 0;
-          return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
+          return candidate(q, v) ? g.volume_sign_exact(v, work) : std::int8_t(0);
         },
         geom::kPredicateWork);
     std::int32_t* ep = error_.data();
