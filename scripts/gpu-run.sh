@@ -525,6 +525,13 @@ case "$plan" in
     step gflip3d 120 "$tbin/gpu_gflip3d"
     step hostile 90 "$tbin/gpu_hostile"
     ;;
+  s16g)  # after the review (lexicographic_sort, Geo::volume_sign_*): the regression tests and gStar4D's extract on the device
+    step parallel 60 "$tbin/gpu_parallel"
+    step gdel3d 150 "$tbin/gpu_gdel3d"
+    step gflip3d 120 "$tbin/gpu_gflip3d"
+    step hostile 90 "$tbin/gpu_hostile"
+    step gstar4d_million 60 "$tbin/gpu_gstar4d" --gtest_filter='*MillionPoints*'
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
