@@ -1,14 +1,14 @@
-// The CUDA backend's algorithm instantiations, in ONE translation unit on purpose.
+// The CUDA backend's algorithm instantiations, in one translation unit.
 //
-// nvcc's extended __host__ __device__ lambdas are wrapped in types named after their
-// enclosing function, and each translation unit keeps its own table of the device-side
-// functions. The templates that create and launch them (par::fill, par::parallel_for,
-// everything in src/) are weak symbols: when two .cu files of one program instantiate
-// the same ones, the linker keeps one copy of each, possibly from different files, and a
-// launch can go through a table that was never filled (seen: a call to address 0 from
-// par::parallel_for, bench/RESULTS.md 2026-11-23). One translation unit for every
-// instantiation of the library removes the hazard inside the library; a test program
-// that instantiates internal templates itself still has it (tests/gpu/star_stage.cu).
+// Until 2026-11-26 this was a guard against nvcc's extended __host__ __device__
+// lambdas: their wrappers copy themselves through per-translation-unit function
+// pointers, while the templates that launch them are weak symbols merged across units,
+// so two .cu files instantiating the same template could launch through pointers that
+// were never set (a call to address 0, bench/RESULTS.md 2026-11-23). The per-element
+// lambdas are now __device__ lambdas in CUDA units (GDEL_LAMBDA, core/macros.hpp), whose
+// wrappers hold no such pointers, so tests that instantiate internal templates
+// themselves (tests/gpu/star_stage.cu) are safe too. One unit is kept because it
+// instantiates each template once for the whole library.
 // The files below are not compiled on their own (src/CMakeLists.txt excludes them).
 #include "api/delaunay_cuda.cu"
 #include "api/regular_cuda.cu"

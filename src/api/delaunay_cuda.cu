@@ -76,7 +76,7 @@ struct DeviceOutput {
     auto a = allocate<std::int32_t>(&ctx, device, n);
     std::int32_t* ap = a.data();
     const I64* rp = rep.data();
-    par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) { ap[i] = static_cast<std::int32_t>(rp[i]); });
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) { ap[i] = static_cast<std::int32_t>(rp[i]); });
     res->representative = std::move(a);
   }
   void failed_vertices(par::Context<par::Cuda>& ctx, const par::Buffer<I64, par::Cuda>& fl, std::size_t nfv,
@@ -86,7 +86,7 @@ struct DeviceOutput {
     const I64* flp = fl.data();
     const I64* sp = sid.data();
     par::parallel_for(ctx, static_cast<I64>(nfv),
-                      [=] GDEL_HD(I64 k) { ap[k] = static_cast<std::int32_t>(sp[flp[k]]); });
+                      [=] GDEL_LAMBDA(I64 k) { ap[k] = static_cast<std::int32_t>(sp[flp[k]]); });
     par::sort_keys(ctx, ap, nfv);  // ascending, as Triangulation::failed_vertices
     res->failed_vertices = std::move(a);
   }
@@ -171,7 +171,7 @@ DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& o
     conv.resize_discard(count);
     double* cp = conv.data();
     const float* fp = static_cast<const float*>(points.data);
-    par::parallel_for(ctx, static_cast<I64>(count), [=] GDEL_HD(I64 i) { cp[i] = static_cast<double>(fp[i]); });
+    par::parallel_for(ctx, static_cast<I64>(count), [=] GDEL_LAMBDA(I64 i) { cp[i] = static_cast<double>(fp[i]); });
     xp = cp;
   }
 
@@ -199,7 +199,7 @@ DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& o
       cp = conv.data();
     }
     const double* src = xp;
-    par::parallel_for(ctx, static_cast<I64>(count), [=] GDEL_HD(I64 i) { cp[i] = ldexp(src[i], k); });
+    par::parallel_for(ctx, static_cast<I64>(count), [=] GDEL_LAMBDA(I64 i) { cp[i] = ldexp(src[i], k); });
     xp = cp;
   }
   res.points_read = xp;

@@ -204,7 +204,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     st.exact_evaluations += splay::GDel3D<B>::failed_flags(ctx, mv, nt, g, m, fvp);
     Buffer<I64, B> fl(ctx, static_cast<std::size_t>(m));
     std::size_t nfv = par::select_indices(ctx, static_cast<std::size_t>(m), fl.data(),
-                                          [=] GDEL_HD(I64 v) { return fvp[v] != 0; });
+                                          [=] GDEL_LAMBDA(I64 v) { return fvp[v] != 0; });
     st.failed_vertices = static_cast<I64>(nfv);
     sink.failed_vertices(ctx, fl, nfv, sid, out);
     par::mark(ctx, "output: failed vertices");
@@ -212,7 +212,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   // finite tets, input ids, neighbours (-1 across the hull)
   Buffer<tid_t, B> fin(ctx, static_cast<std::size_t>(nt + 1));
   tid_t* fp = fin.data();
-  par::parallel_for(ctx, nt, [=] GDEL_HD(I64 t) { fp[t] = flip::Geo::inf_slot(mv.tet[t].v, inf) < 0 ? 1 : 0; });
+  par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 t) { fp[t] = flip::Geo::inf_slot(mv.tet[t].v, inf) < 0 ? 1 : 0; });
   const tid_t nfin = par::counts_to_offsets(ctx, fp, static_cast<std::size_t>(nt));
   // The mesh is consumed one array at a time, so that the output never sits beside
   // the whole mesh.
@@ -221,14 +221,14 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   Buffer<std::int32_t, B> tv(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
   std::int32_t* tvp = tv.data();
   const I64* sp = sid.data();
-  par::parallel_for(ctx, nt, [=] GDEL_HD(I64 t) {
+  par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 t) {
     if (fp[t + 1] == fp[t]) return;  // infinite tet
     for (int i = 0; i < 4; ++i) tvp[4 * fp[t] + i] = static_cast<std::int32_t>(sp[mv.tet[t].v[i]]);
   });
   mesh.tets().release();
   Buffer<std::int32_t, B> tn(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
   std::int32_t* tnp = tn.data();
-  par::parallel_for(ctx, nt, [=] GDEL_HD(I64 t) {
+  par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 t) {
     if (fp[t + 1] == fp[t]) return;
     const I64 d = fp[t];
     for (int i = 0; i < 4; ++i) {

@@ -37,7 +37,7 @@ void prepare_points(par::Context<B>& ctx, const double* xp, std::int64_t n, cons
     par::Buffer<double, B> coord(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));
     double* cp = coord.data();
     for (int a = 0; a < 3; ++a) {
-      par::parallel_for(ctx, n, [=] GDEL_HD(I64 k) { cp[k] = xp[3 * k + a]; });
+      par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 k) { cp[k] = xp[3 * k + a]; });
       pr.lo[a] = par::reduce_min(ctx, cp, static_cast<std::size_t>(n), HUGE_VAL);
       pr.hi[a] = par::reduce_max(ctx, cp, static_cast<std::size_t>(n), -HUGE_VAL);
     }
@@ -52,15 +52,15 @@ void prepare_points(par::Context<B>& ctx, const double* xp, std::int64_t n, cons
   pr.sid.resize(static_cast<std::size_t>(m + 1));
   double* pp = pr.P.data();
   I64* sp = pr.sid.data();
-  par::parallel_for(ctx, m, [=] GDEL_HD(I64 k) {
+  par::parallel_for(ctx, m, [=] GDEL_LAMBDA(I64 k) {
     for (int a = 0; a < 3; ++a) pp[3 * k + a] = xp[3 * idp[k] + a];
     sp[k] = idp[k];
   });
-  par::parallel_for(ctx, 1, [=] GDEL_HD(I64) { sp[m] = n; });  // ∞ perturbs least; any fixed index works
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(I64) { sp[m] = n; });  // ∞ perturbs least; any fixed index works
   if (wp) {
     pr.W.resize(static_cast<std::size_t>(m + 1));
     double* wq = pr.W.data();
-    par::parallel_for(ctx, m + 1, [=] GDEL_HD(I64 k) { wq[k] = k < m ? wp[sp[k]] : 0.0; });
+    par::parallel_for(ctx, m + 1, [=] GDEL_LAMBDA(I64 k) { wq[k] = k < m ? wp[sp[k]] : 0.0; });
   }
 }
 
@@ -70,7 +70,7 @@ void to_input_ids(par::Context<B>& ctx, par::Buffer<vid_t, B>& tets, const par::
   vid_t* tp = tets.data();
   const std::int64_t* sp = sid.data();
   par::parallel_for(ctx, static_cast<std::int64_t>(tets.size()),
-                    [=] GDEL_HD(std::int64_t i) { tp[i] = static_cast<vid_t>(sp[tp[i]]); });
+                    [=] GDEL_LAMBDA(std::int64_t i) { tp[i] = static_cast<vid_t>(sp[tp[i]]); });
 }
 
 }  // namespace gdel::api

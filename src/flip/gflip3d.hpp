@@ -339,14 +339,14 @@ class GFlip3D {
   std::int64_t argmax(F f) {
     Buffer<double, B> v(ctx_, static_cast<std::size_t>(n_));
     double* vp = v.data();
-    par::parallel_for(ctx_, n_, [=] GDEL_HD(std::int64_t i) {
+    par::parallel_for(ctx_, n_, [=] GDEL_LAMBDA(std::int64_t i) {
       const double x = f(i);
       vp[i] = (x == x) ? x : -1.0;  // NaN never wins
     });
     double best = par::reduce_max(ctx_, vp, static_cast<std::size_t>(n_), -1.0);
     Buffer<std::int64_t, B> idx(ctx_, static_cast<std::size_t>(n_));
     std::int64_t* ip = idx.data();
-    par::parallel_for(ctx_, n_, [=] GDEL_HD(std::int64_t i) { ip[i] = vp[i] == best ? i : INT64_MAX; });
+    par::parallel_for(ctx_, n_, [=] GDEL_LAMBDA(std::int64_t i) { ip[i] = vp[i] == best ? i : INT64_MAX; });
     const std::int64_t r = par::reduce_min(ctx_, ip, static_cast<std::size_t>(n_), INT64_MAX);
     return r == INT64_MAX ? 0 : r;
   }
@@ -357,7 +357,7 @@ class GFlip3D {
     const double* X = xyz_.data();
     Buffer<double, B> a(ctx_, static_cast<std::size_t>(3 * n_));
     double* ap = a.data();
-    par::parallel_for(ctx_, 3 * n_, [=] GDEL_HD(std::int64_t i) { ap[i] = X[i] < 0 ? -X[i] : X[i]; });
+    par::parallel_for(ctx_, 3 * n_, [=] GDEL_LAMBDA(std::int64_t i) { ap[i] = X[i] < 0 ? -X[i] : X[i]; });
     const double m = par::reduce_max(ctx_, ap, static_cast<std::size_t>(3 * n_), 0.0);
     return m > 0 ? 1.0 / m : 1.0;
   }
@@ -379,13 +379,13 @@ class GFlip3D {
     inv_scale_ = inverse_scale();
     const double sc = inv_scale_;
     // extreme points in x (as coordinates; only a choice)
-    std::int64_t a = argmax([=] GDEL_HD(std::int64_t i) { return -X[3 * i]; });
-    std::int64_t b = argmax([=] GDEL_HD(std::int64_t i) { return X[3 * i]; });
+    std::int64_t a = argmax([=] GDEL_LAMBDA(std::int64_t i) { return -X[3 * i]; });
+    std::int64_t b = argmax([=] GDEL_LAMBDA(std::int64_t i) { return X[3 * i]; });
     if (a == b) b = (a == 0) ? 1 : 0;
     const auto pa = host_point(a), pb = host_point(b);
     const double ax = pa[0] * sc, ay = pa[1] * sc, az = pa[2] * sc;
     const double ux = pb[0] * sc - ax, uy = pb[1] * sc - ay, uz = pb[2] * sc - az;
-    std::int64_t c = argmax([=] GDEL_HD(std::int64_t i) {
+    std::int64_t c = argmax([=] GDEL_LAMBDA(std::int64_t i) {
       double wx = X[3 * i] * sc - ax, wy = X[3 * i + 1] * sc - ay, wz = X[3 * i + 2] * sc - az;
       double cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
       return cx * cx + cy * cy + cz * cz;
@@ -393,7 +393,7 @@ class GFlip3D {
     const auto pc = host_point(c);
     const double bx = pb[0] * sc, by = pb[1] * sc, bz = pb[2] * sc, cx = pc[0] * sc, cy = pc[1] * sc,
                  cz = pc[2] * sc;
-    std::int64_t d = argmax([=] GDEL_HD(std::int64_t i) {
+    std::int64_t d = argmax([=] GDEL_LAMBDA(std::int64_t i) {
       const double A[3] = {ax, ay, az}, Bp[3] = {bx, by, bz}, C[3] = {cx, cy, cz};
       const double D[3] = {X[3 * i] * sc, X[3 * i + 1] * sc, X[3 * i + 2] * sc};
       double o = orient_value(A, Bp, C, D);
@@ -466,7 +466,7 @@ class GFlip3D {
     if (!locate_points) {
       const vid_t o0 = t0[0], o1 = t0[1], o2 = t0[2], o3 = t0[3];
       Buffer<vid_t, B> rest(ctx_, static_cast<std::size_t>(n_));
-      const std::size_t m = par::select_indices(ctx_, static_cast<std::size_t>(n_), rest.data(), [=] GDEL_HD(vid_t q) {
+      const std::size_t m = par::select_indices(ctx_, static_cast<std::size_t>(n_), rest.data(), [=] GDEL_LAMBDA(vid_t q) {
         return q != o0 && q != o1 && q != o2 && q != o3;
       });
       rest.resize(m);
@@ -481,7 +481,7 @@ class GFlip3D {
     gk.inf = -1;  // K as a genuine point for the cone test
     const vid_t K = inf;
     const vid_t o0 = t0[0], o1 = t0[1], o2 = t0[2], o3 = t0[3];
-    auto locate = [=] GDEL_HD(std::int64_t q, double* work, bool exact) -> bool {
+    auto locate = [=] GDEL_LAMBDA(std::int64_t q, double* work, bool exact) -> bool {
       if (q == o0 || q == o1 || q == o2 || q == o3) {
         vt[q] = -1;
         return true;
@@ -497,11 +497,11 @@ class GFlip3D {
     };
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(n_));
     st_.exact_evaluations += fast_then_exact(
-        ctx_, n_, und.data(), [=] GDEL_HD(std::int64_t q) { return locate(q, nullptr, false); },
-        [=] GDEL_HD(std::int64_t q, double* work) { locate(q, work, true); });
+        ctx_, n_, und.data(), [=] GDEL_LAMBDA(std::int64_t q) { return locate(q, nullptr, false); },
+        [=] GDEL_LAMBDA(std::int64_t q, double* work) { locate(q, work, true); });
     todo_.resize(static_cast<std::size_t>(n_));
     std::size_t m = par::select_indices(ctx_, static_cast<std::size_t>(n_), todo_.data(),
-                                        [=] GDEL_HD(vid_t q) { return vt[q] >= 0; });
+                                        [=] GDEL_LAMBDA(vid_t q) { return vt[q] >= 0; });
     todo_.resize(m);
   }
 
@@ -522,16 +522,16 @@ class GFlip3D {
     std::int8_t* sp = sg.data();
     st_.exact_evaluations += par::two_stage_signs(
         ctx_, n_, sp,
-        [=] GDEL_HD(std::int64_t q) -> std::int8_t {
+        [=] GDEL_LAMBDA(std::int64_t q) -> std::int8_t {
           return static_cast<std::int8_t>(geom::orient3d_filter(X + 3 * a, X + 3 * b, X + 3 * c, X + 3 * q));
         },
-        [=] GDEL_HD(std::int64_t q, double* work) -> std::int8_t {
+        [=] GDEL_LAMBDA(std::int64_t q, double* work) -> std::int8_t {
           return static_cast<std::int8_t>(geom::orient3d_exact(X + 3 * a, X + 3 * b, X + 3 * c, X + 3 * q, work));
         },
         geom::kPredicateWork);
     Buffer<std::int64_t, B> idx(ctx_, static_cast<std::size_t>(n_));
     std::int64_t* ip = idx.data();
-    par::parallel_for(ctx_, n_, [=] GDEL_HD(std::int64_t q) { ip[q] = sp[q] != 0 ? q : INT64_MAX; });
+    par::parallel_for(ctx_, n_, [=] GDEL_LAMBDA(std::int64_t q) { ip[q] = sp[q] != 0 ? q : INT64_MAX; });
     std::int64_t r = par::reduce_min(ctx_, ip, static_cast<std::size_t>(n_), INT64_MAX);
     return r == INT64_MAX ? -1 : r;
   }
@@ -540,7 +540,7 @@ class GFlip3D {
     const double* X = xyz_.data();
     Buffer<std::int64_t, B> idx(ctx_, static_cast<std::size_t>(n_));
     std::int64_t* ip = idx.data();
-    par::for_each_with_scratch(ctx_, n_, geom::kPredicateWork, [=] GDEL_HD(std::int64_t q, double* work) {
+    par::for_each_with_scratch(ctx_, n_, geom::kPredicateWork, [=] GDEL_LAMBDA(std::int64_t q, double* work) {
       const double *pa = X + 3 * a, *pb = X + 3 * b, *pq = X + 3 * q;
       const bool collinear = geom::orient2d_proj(pa, pb, pq, 0, 1, work) == 0 &&
                              geom::orient2d_proj(pa, pb, pq, 1, 2, work) == 0 &&
@@ -626,7 +626,7 @@ class GFlip3D {
     const double is = inv_scale_;
     const int tie = tie_mode_;
     // 1. each tet keeps its best point: key = score bits << 32 | tie_break(point)
-    par::parallel_for(ctx_, u, [=] GDEL_HD(std::int64_t k) {
+    par::parallel_for(ctx_, u, [=] GDEL_LAMBDA(std::int64_t k) {
       const vid_t q = U[k];
       const tid_t t = vt[q];
       const vid_t* v = m.tet[t].v;
@@ -660,13 +660,13 @@ class GFlip3D {
     // 2. winners
     Buffer<std::int64_t, B> win(ctx_, static_cast<std::size_t>(u));
     std::int64_t* wp = win.data();
-    std::int64_t k = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(u), wp, [=] GDEL_HD(std::int64_t i) {
+    std::int64_t k = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(u), wp, [=] GDEL_LAMBDA(std::int64_t i) {
       const vid_t q = U[i];
       const tid_t t = vt[q];
       return std::uint32_t(best[t]) == tie_break(std::uint32_t(q), tie) && !(independent && split_defers(m, best, t));
     }));
     // the tets that defer keep their points: their keys too go back to 0
-    if (independent) par::parallel_for(ctx_, u, [=] GDEL_HD(std::int64_t i) { best[vt[U[i]]] = 0; });
+    if (independent) par::parallel_for(ctx_, u, [=] GDEL_LAMBDA(std::int64_t i) { best[vt[U[i]]] = 0; });
     par::mark(ctx_, "insert: select winners");
     // 3. slots: 3 new per split (child 0 reuses the split tet's slot)
     const mesh::SlotSource src = claim(3 * k);
@@ -679,7 +679,7 @@ class GFlip3D {
     tid_t* ch = child.data();
     mesh::Tet* op = old.data();
     vid_t* np = newp.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(std::int64_t s) {
       const vid_t q = U[wp[s]];
       const tid_t t = vt[q];
       ch[4 * s] = t;
@@ -693,10 +693,10 @@ class GFlip3D {
     // 4. split: write children, external links (unsplit neighbours written back here)
     Buffer<fid_t, B> oldopp(ctx_, static_cast<std::size_t>(4 * k));
     fid_t* oo = oldopp.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(std::int64_t s) {
       for (int i = 0; i < 4; ++i) oo[4 * s + i] = m.opp(4 * std::int64_t(ch[4 * s]) + i);
     });
-    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(std::int64_t s) {
       const vid_t* o = op[s].v;
       for (int i = 0; i < 4; ++i) {
         const tid_t c = ch[4 * s + i];
@@ -725,7 +725,7 @@ class GFlip3D {
     // 5. relocate the remaining points of split tets among the children
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
     const Geo gg = g;
-    auto reloc = [=] GDEL_HD(std::int64_t i, double* work, bool exact) -> bool {
+    auto reloc = [=] GDEL_LAMBDA(std::int64_t i, double* work, bool exact) -> bool {
       const vid_t q = U[i];
       const tid_t t = vt[q];
       if (t < 0) return true;  // inserted this round
@@ -738,14 +738,14 @@ class GFlip3D {
     };
     // vt[q] is rewritten by the pass that decides it; undecided items keep the old tet.
     st_.exact_evaluations += fast_then_exact(
-        ctx_, u, und.data(), [=] GDEL_HD(std::int64_t i) { return reloc(i, nullptr, false); },
-        [=] GDEL_HD(std::int64_t i, double* work) { reloc(i, work, true); });
+        ctx_, u, und.data(), [=] GDEL_LAMBDA(std::int64_t i) { return reloc(i, nullptr, false); },
+        [=] GDEL_LAMBDA(std::int64_t i, double* work) { reloc(i, work, true); });
     par::mark(ctx_, "insert: relocate in split");
     // 6. reset split marks, drop inserted points from the work list
-    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t s) { split_of[ch[4 * s]] = -1; });
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(std::int64_t s) { split_of[ch[4 * s]] = -1; });
     Buffer<vid_t, B> rest(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
     std::size_t r = par::copy_if(ctx_, U, rest.data(), static_cast<std::size_t>(u),
-                                 [=] GDEL_HD(vid_t q) { return vt[q] >= 0; });
+                                 [=] GDEL_LAMBDA(vid_t q) { return vt[q] >= 0; });
     rest.resize(r);
     todo_ = std::move(rest);
     par::mark(ctx_, "insert: compact points");
@@ -767,7 +767,7 @@ class GFlip3D {
       Buffer<tid_t, B> a(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(sz, 1)));
       const std::uint8_t* stp = mesh_.state().data();
       std::size_t na = par::select_indices(ctx_, static_cast<std::size_t>(sz), a.data(),
-                                           [=] GDEL_HD(tid_t t) { return (stp[t] & mesh::kAlive) != 0; });
+                                           [=] GDEL_LAMBDA(tid_t t) { return (stp[t] & mesh::kAlive) != 0; });
       a.resize(na);
       active_ = std::move(a);
     }
@@ -798,12 +798,12 @@ class GFlip3D {
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(na));
     st_.exact_evaluations += fast_then_exact(
         ctx_, na, und.data(),
-        [=] GDEL_HD(std::int64_t k) {
+        [=] GDEL_LAMBDA(std::int64_t k) {
           int p = propose_flip<false>(g, m, A[k], nullptr);
           pp[k] = p;
           return p != kUndecidedResult;
         },
-        [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_flip<true>(g, m, A[k], work); });
+        [=] GDEL_LAMBDA(std::int64_t k, double* work) { pp[k] = propose_flip<true>(g, m, A[k], work); });
     par::mark(ctx_, "flip: propose");
     und.release();
     return commit_flips(A, na, prop, with_log) > 0;
@@ -827,7 +827,7 @@ class GFlip3D {
     // again (bench/RESULTS.md, session 11). Not under the original rule: on cospherical
     // input most facets are stuck ties, re-proposed (exactly, with SoS) every iteration.
     const bool keep_stuck = cfg_.independent_splits;
-    auto is_proposer = [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); };
+    auto is_proposer = [=] GDEL_LAMBDA(std::int64_t k) { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); };
     // The proposer list (positions in A: na < 2^31, as tets) is counted first and sized
     // exactly: in the last flip loop, over every tet, few of them propose, and a list
     // sized by the active set was 54 bytes per point of the run's peak (bench/RESULTS.md).
@@ -843,7 +843,7 @@ class GFlip3D {
     // vote: the smallest proposer index wins each tet (atomic max of INT_MAX - index, so
     // that -1 is the empty vote); accepted flips are disjoint
     std::int32_t* vote = aux_pick_.data();
-    par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) {
       const std::int64_t k = plp[j];
       if (pp[k] < 0) return;  // stuck
       tid_t ts[3];
@@ -852,7 +852,7 @@ class GFlip3D {
     });
     Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(np));
     std::int8_t* ap = acc.data();
-    par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) {
       const std::int64_t k = plp[j];
       tid_t ts[3];
       int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
@@ -860,7 +860,7 @@ class GFlip3D {
       for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == static_cast<std::int32_t>(INT_MAX - A[k]);
       ap[j] = ok ? 1 : 0;
     });
-    par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) {
       const std::int64_t k = plp[j];
       if (pp[k] < 0) return;
       tid_t ts[3];
@@ -872,26 +872,26 @@ class GFlip3D {
     // (not const: nvcc 13.0 crashes, "i_copy_expr_tree", on a const local whose
     // initializer contains an extended lambda once it is used in a constant context)
     std::int64_t nfl = static_cast<std::int64_t>(
-        par::select_indices(ctx_, static_cast<std::size_t>(np), flp, [=] GDEL_HD(std::int64_t j) { return ap[j] != 0; }));
+        par::select_indices(ctx_, static_cast<std::size_t>(np), flp, [=] GDEL_LAMBDA(std::int64_t j) { return ap[j] != 0; }));
     if (nfl == 0) {  // only stuck tets: they stay active
       Buffer<tid_t, B> act(ctx_, static_cast<std::size_t>(np));
       tid_t* acp = act.data();
-      par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) { acp[j] = A[plp[j]]; });
+      par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = A[plp[j]]; });
       active_ = std::move(act);
       return 0;
     }
     if (nfl > cfg_.max_flips_per_iteration) {  // the rest stand down (FlipConfig::max_flips_per_iteration)
       const std::int64_t keep = cfg_.max_flips_per_iteration;
-      par::parallel_for(ctx_, nfl - keep, [=] GDEL_HD(std::int64_t f) { ap[flp[keep + f]] = 0; });
+      par::parallel_for(ctx_, nfl - keep, [=] GDEL_LAMBDA(std::int64_t f) { ap[flp[keep + f]] = 0; });
       nfl = keep;
     }
     // flips' proposer positions in A
-    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { flp[f] = plp[flp[f]]; });
+    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) { flp[f] = plp[flp[f]]; });
     par::mark(ctx_, "flip: vote + select accepted");
     if (debug_) {  // accepted flips must touch disjoint, alive tets
       Buffer<tid_t, B> tt(ctx_, static_cast<std::size_t>(3 * nfl));
       tid_t* ttp = tt.data();
-      par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
+      par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
         tid_t ts[3] = {-1, -1, -1};
         prop_tets(m, A[flp[f]], pp[flp[f]], ts);
         for (int l = 0; l < 3; ++l) ttp[3 * f + l] = ts[l];
@@ -928,7 +928,7 @@ class GFlip3D {
     // count 2-3 flips: each needs one new slot
     Buffer<std::int64_t, B> off23(ctx_, static_cast<std::size_t>(nfl + 1));
     std::int64_t* o23 = off23.data();
-    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) { o23[f] = prop_type(pp[flp[f]]) == 1 ? 1 : 0; });
+    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) { o23[f] = prop_type(pp[flp[f]]) == 1 ? 1 : 0; });
     const std::int64_t n23 = par::counts_to_offsets(ctx_, o23, static_cast<std::size_t>(nfl));
     st_.flips23 += n23;
     st_.flips32 += nfl - n23;
@@ -959,8 +959,8 @@ class GFlip3D {
     // exact orientation); (b) write. Pass (a) is split fast/exact.
     const BuildFlipRecord bfr{m, g, A, flp, pp, rec};
     st_.exact_evaluations += fast_then_exact(
-        ctx_, nfl, und2.data(), [=] GDEL_HD(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
-        [=] GDEL_HD(std::int64_t f, double* work) { bfr.template run<true>(f, work); });
+        ctx_, nfl, und2.data(), [=] GDEL_LAMBDA(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
+        [=] GDEL_LAMBDA(std::int64_t f, double* work) { bfr.template run<true>(f, work); });
     par::mark(ctx_, "flip: records");
     prop.release();  // (the codes and the accepted list are the records' now)
     fl.release();
@@ -972,7 +972,7 @@ class GFlip3D {
     std::uint8_t* ef = ext_from.data();
     fid_t* eo = ext_old.data();
     // (b) slots, vertices, internal links, external messages
-    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
+    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
       FlipRec& r = rec[f];
       vid_t nv[3][4];
       const int nn = flip_new_tets(r, nv);
@@ -1024,7 +1024,7 @@ class GFlip3D {
     });
     par::mark(ctx_, "flip: write tets");
     // adjacency across external faces
-    par::parallel_for(ctx_, 6 * nfl, [=] GDEL_HD(std::int64_t e) {
+    par::parallel_for(ctx_, 6 * nfl, [=] GDEL_LAMBDA(std::int64_t e) {
       const fid_t nf = pack_facet(rec[e / 6].out[en[e] >> 2], en[e] & 3);
       fid_t nb = eo[e];
       if (nb >= 0) {
@@ -1051,7 +1051,7 @@ class GFlip3D {
     if (nfl > n23) {
       Buffer<tid_t, B> freed(ctx_, static_cast<std::size_t>(nfl - n23));
       tid_t* fr = freed.data();
-      par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
+      par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
         if (rec[f].type == 2) fr[f - o23[f]] = rec[f].in[2];
       });
       mesh_.release(fr, nfl - n23);
@@ -1060,15 +1060,15 @@ class GFlip3D {
     // next active set: rejected proposers (the stuck tets among them) and the flips' new tets
     Buffer<tid_t, B> nxt(ctx_, static_cast<std::size_t>(np + 3 * nfl));
     tid_t* nx = nxt.data();
-    par::parallel_for(ctx_, np, [=] GDEL_HD(std::int64_t j) { nx[j] = ap[j] ? -1 : A[plp[j]]; });
-    par::parallel_for(ctx_, nfl, [=] GDEL_HD(std::int64_t f) {
+    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) { nx[j] = ap[j] ? -1 : A[plp[j]]; });
+    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
       for (int a = 0; a < 3; ++a) nx[np + 3 * f + a] = rec[f].out[a];
     });
     const std::size_t tot = static_cast<std::size_t>(np + 3 * nfl);
     par::sort_keys(ctx_, nx, tot);
     std::size_t nu = par::unique(ctx_, nx, tot);
     Buffer<tid_t, B> act(ctx_, nu);
-    std::size_t na2 = par::copy_if(ctx_, nx, act.data(), nu, [=] GDEL_HD(tid_t t) { return t >= 0; });
+    std::size_t na2 = par::copy_if(ctx_, nx, act.data(), nu, [=] GDEL_LAMBDA(tid_t t) { return t >= 0; });
     act.resize(na2);
     active_ = std::move(act);
     par::mark(ctx_, "flip: next active set");
@@ -1158,7 +1158,7 @@ class GFlip3D {
     Buffer<std::int8_t, B> sg(ctx_, static_cast<std::size_t>(4 * std::max<std::int64_t>(nt, 1)));
     const std::int8_t* sp = sg.data();
     st_.exact_evaluations += facet_signs(ctx_, m, nt, geo(), sg.data());
-    auto positive = [=] GDEL_HD(std::int64_t f) { return sp[f] > 0; };
+    auto positive = [=] GDEL_LAMBDA(std::int64_t f) { return sp[f] > 0; };
     // (not const: see commit_flips' note on nvcc)
     std::int64_t k = par::count_indices(ctx_, static_cast<std::size_t>(4 * nt), positive);
     Buffer<std::int64_t, B> fl(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(k, 1)));
@@ -1166,7 +1166,7 @@ class GFlip3D {
     par::select_indices(ctx_, static_cast<std::size_t>(4 * nt), fp, positive);
     sides.resize(static_cast<std::size_t>(2 * k));
     tid_t* s = sides.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(std::int64_t j) {
       s[2 * j] = static_cast<tid_t>(fp[j] >> 2);
       s[2 * j + 1] = m.opp_tet(fp[j]);
     });
@@ -1181,7 +1181,7 @@ class GFlip3D {
     const std::size_t nu = par::unique(ctx_, tp, t.size());
     const std::uint8_t* stp = mesh_.state().data();
     Buffer<tid_t, B> out(ctx_, std::max<std::size_t>(nu, 1));
-    std::size_t na = par::copy_if(ctx_, tp, out.data(), nu, [=] GDEL_HD(tid_t x) { return (stp[x] & mesh::kAlive) != 0; });
+    std::size_t na = par::copy_if(ctx_, tp, out.data(), nu, [=] GDEL_LAMBDA(tid_t x) { return (stp[x] & mesh::kAlive) != 0; });
     out.resize(na);
     t = std::move(out);
   }
@@ -1218,7 +1218,7 @@ class GFlip3D {
     set_of(touched);
     MeshView m = mesh_.view();
     const tid_t* tp = touched.data();
-    par::parallel_for(ctx_, static_cast<std::int64_t>(touched.size()), [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(ctx_, static_cast<std::int64_t>(touched.size()), [=] GDEL_LAMBDA(std::int64_t j) {
       for (int i = 0; i < 4; ++i) m.set_face_flags(tp[j], i, 0);
     });
     active_ = std::move(touched);
@@ -1240,32 +1240,32 @@ class GFlip3D {
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(n));
     st_.exact_evaluations += fast_then_exact(
         ctx_, n, und.data(),
-        [=] GDEL_HD(std::int64_t k) {
+        [=] GDEL_LAMBDA(std::int64_t k) {
           pp[k] = propose_nonoptimal<false>(g, m, F[k], other_edges, nullptr);
           return pp[k] != kUndecidedResult;
         },
-        [=] GDEL_HD(std::int64_t k, double* work) { pp[k] = propose_nonoptimal<true>(g, m, F[k], other_edges, work); });
+        [=] GDEL_LAMBDA(std::int64_t k, double* work) { pp[k] = propose_nonoptimal<true>(g, m, F[k], other_edges, work); });
     Buffer<std::int64_t, B> sel(ctx_, static_cast<std::size_t>(n));
     std::int64_t* sl = sel.data();
     std::int64_t ns = static_cast<std::int64_t>(  // (not const: nvcc, as above)
-        par::select_indices(ctx_, static_cast<std::size_t>(n), sl, [=] GDEL_HD(std::int64_t k) { return pp[k] >= 0; }));
+        par::select_indices(ctx_, static_cast<std::size_t>(n), sl, [=] GDEL_LAMBDA(std::int64_t k) { return pp[k] >= 0; }));
     if (ns == 0) return 0;
     // one proposal per carrying tet: the smallest position wins (vote array as in
     // commit_flips, reset after)
     std::int32_t* vote = aux_pick_.data();
-    par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(ctx_, ns, [=] GDEL_LAMBDA(std::int64_t j) {
       par::atomic_max(vote + proposal_tet(pp[sl[j]]), static_cast<std::int32_t>(INT_MAX - j));
     });
     Buffer<tid_t, B> A(ctx_, static_cast<std::size_t>(ns));
     Buffer<std::int32_t, B> code(ctx_, static_cast<std::size_t>(ns));
     tid_t* ap = A.data();
     std::int32_t* cp = code.data();
-    par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(ctx_, ns, [=] GDEL_LAMBDA(std::int64_t j) {
       const tid_t t = proposal_tet(pp[sl[j]]);
       ap[j] = t;
       cp[j] = vote[t] == static_cast<std::int32_t>(INT_MAX - j) ? proposal_code(pp[sl[j]]) : -1;
     });
-    par::parallel_for(ctx_, ns, [=] GDEL_HD(std::int64_t j) { vote[ap[j]] = -1; });
+    par::parallel_for(ctx_, ns, [=] GDEL_LAMBDA(std::int64_t j) { vote[ap[j]] = -1; });
     par::mark(ctx_, "non-optimal flips: propose");
     return commit_flips(ap, ns, code, with_log);
   }
@@ -1275,7 +1275,7 @@ class GFlip3D {
   // points' tets need remapping.
   void reorder_tets() {
     const vid_t inf = static_cast<vid_t>(n_);
-    auto remap = mesh_.reorder([=] GDEL_HD(const mesh::Tet& t) {
+    auto remap = mesh_.reorder([=] GDEL_LAMBDA(const mesh::Tet& t) {
       // smallest finite vertex id; tets of ∞ sort with their smallest finite vertex
       vid_t m = inf;
       for (int i = 0; i < 4; ++i) m = (t.v[i] != inf && t.v[i] < m) ? t.v[i] : m;
@@ -1284,7 +1284,7 @@ class GFlip3D {
     const tid_t* rm = remap.data();
     const vid_t* U = todo_.data();
     tid_t* vt = vert_tet_.data();
-    par::parallel_for(ctx_, static_cast<std::int64_t>(todo_.size()), [=] GDEL_HD(std::int64_t i) { vt[U[i]] = rm[vt[U[i]]]; });
+    par::parallel_for(ctx_, static_cast<std::int64_t>(todo_.size()), [=] GDEL_LAMBDA(std::int64_t i) { vt[U[i]] = rm[vt[U[i]]]; });
     // per-tet auxiliary state is all at its reset value between rounds, but for stale
     // flip stamps, which never match a later iteration (insert_round clears them)
     grow_aux();
@@ -1312,7 +1312,7 @@ class GFlip3D {
     // backwards: outputs point at the next flip consuming their slot (or ~slot)
     for (std::size_t it = log_iters_.size() - 1; it > 0; --it) {
       const std::int64_t lo = log_iters_[it - 1], hi = log_iters_[it];
-      par::parallel_for(ctx_, hi - lo, [=] GDEL_HD(std::int64_t k) {
+      par::parallel_for(ctx_, hi - lo, [=] GDEL_LAMBDA(std::int64_t k) {
         const std::int64_t f = lo + k;
         FlipRec& r = rec[f];
         for (int o = 0; o < 3; ++o) {
@@ -1328,7 +1328,7 @@ class GFlip3D {
     const std::int64_t u = static_cast<std::int64_t>(todo_.size());
     tid_t* vt = vert_tet_.data();
     const Geo g = geo();
-    auto walk = [=] GDEL_HD(std::int64_t i, double* work, bool exact) -> bool {
+    auto walk = [=] GDEL_LAMBDA(std::int64_t i, double* work, bool exact) -> bool {
       const vid_t q = U[i];
       std::int64_t node = static_cast<std::int64_t>(next[vt[q]]) - 1;
       if (node < 0) return true;
@@ -1342,11 +1342,11 @@ class GFlip3D {
     };
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
     st_.exact_evaluations += fast_then_exact(
-        ctx_, u, und.data(), [=] GDEL_HD(std::int64_t i) { return walk(i, nullptr, false); },
-        [=] GDEL_HD(std::int64_t i, double* work) { walk(i, work, true); });
+        ctx_, u, und.data(), [=] GDEL_LAMBDA(std::int64_t i) { return walk(i, nullptr, false); },
+        [=] GDEL_LAMBDA(std::int64_t i, double* work) { walk(i, work, true); });
     par::mark(ctx_, "relocate: DAG walk");
     // reset next[] for the consumed slots
-    par::parallel_for(ctx_, nrec, [=] GDEL_HD(std::int64_t f) {
+    par::parallel_for(ctx_, nrec, [=] GDEL_LAMBDA(std::int64_t f) {
       for (int o = 0; o < 3; ++o)
         if (rec[f].in[o] >= 0) next[rec[f].in[o]] = 0;
     });

@@ -16,7 +16,7 @@ namespace gdel::flip {
 // number of facets the exact pass decided.
 template <class B>
 std::int64_t facet_signs(par::Context<B>& ctx, mesh::MeshView mv, std::int64_t nt, Geo g, std::int8_t* sg) {
-  auto tuple = [=] GDEL_HD(std::int64_t f, vid_t* v) -> bool {
+  auto tuple = [=] GDEL_LAMBDA(std::int64_t f, vid_t* v) -> bool {
     const fid_t o = mv.opp(f);
     const tid_t t = static_cast<tid_t>(f >> 2);
     if (o < 0 || facet_tet(o) < t || !mv.alive(t)) return false;
@@ -27,12 +27,12 @@ std::int64_t facet_signs(par::Context<B>& ctx, mesh::MeshView mv, std::int64_t n
   };
   return par::two_stage_signs(
       ctx, 4 * nt, sg,
-      [=] GDEL_HD(std::int64_t f) -> std::int8_t {
+      [=] GDEL_LAMBDA(std::int64_t f) -> std::int8_t {
         vid_t v[5] = {0, 0, 0, 0, 0};
         if (!tuple(f, v)) return 0;
         return static_cast<std::int8_t>(g.orient4<false>(v, nullptr));
       },
-      [=] GDEL_HD(std::int64_t f, double* work) -> std::int8_t {
+      [=] GDEL_LAMBDA(std::int64_t f, double* work) -> std::int8_t {
         vid_t v[5] = {0, 0, 0, 0, 0};
         if (!tuple(f, v)) return 0;
         return static_cast<std::int8_t>(g.orient4<true>(v, work));

@@ -145,7 +145,7 @@ struct Dual {
     U64* lp = l.data();
     par::detail::Memory<B>::copy(*ctx, hp, hi.data(), static_cast<std::size_t>(u) * sizeof(U64));
     par::detail::Memory<B>::copy(*ctx, lp, lo.data(), static_cast<std::size_t>(u) * sizeof(U64));
-    par::parallel_for(*ctx, m, [=] GDEL_HD(I64 t) {
+    par::parallel_for(*ctx, m, [=] GDEL_LAMBDA(I64 t) {
       std::int32_t v[4] = {ref[4 * t], ref[4 * t + 1], ref[4 * t + 2], ref[4 * t + 3]};
       sort4(v);
       hp[u + t] = pack2(v[0], v[1]);
@@ -157,7 +157,7 @@ struct Dual {
     // exactly two, one from each side
     par::Buffer<I64, B> hit(*ctx, static_cast<std::size_t>(std::max<I64>(tot, 1)));
     I64* hq = hit.data();
-    par::parallel_for(*ctx, tot, [=] GDEL_HD(I64 r) {
+    par::parallel_for(*ctx, tot, [=] GDEL_LAMBDA(I64 r) {
       hq[r] = 0;
       if (r == 0) return;
       const I64 a = o[r - 1], b = o[r];
@@ -177,7 +177,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   // 1. 4-coloured grid tets: count per cube, offsets, write (sorted ids + expected sign)
   par::Buffer<I64, B> cnt(ctx, static_cast<std::size_t>(C + 1));
   I64* cp = cnt.data();
-  par::parallel_for(ctx, C, [=] GDEL_HD(I64 c) {
+  par::parallel_for(ctx, C, [=] GDEL_LAMBDA(I64 c) {
     std::int32_t col[8];
     cube_colours(site, W, c, col);
     cp[c] = popcount6(coloured_kuhn_tets(col, -1));
@@ -193,7 +193,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   U64* ghp = gh.data();
   U64* glp = gl.data();
   std::int8_t* gep = ge.data();
-  par::parallel_for(ctx, C, [=] GDEL_HD(I64 c) {
+  par::parallel_for(ctx, C, [=] GDEL_LAMBDA(I64 c) {
     std::int32_t col[8];
     cube_colours(site, W, c, col);
     const int mask = coloured_kuhn_tets(col, -1);
@@ -218,7 +218,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   const I64* o = ord.data();
   par::Buffer<I64, B> heads(ctx, static_cast<std::size_t>(G + 1));
   I64* hd = heads.data();
-  I64 U = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(G), hd, [=] GDEL_HD(I64 r) {
+  I64 U = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(G), hd, [=] GDEL_LAMBDA(I64 r) {
     return r == 0 || ghp[o[r]] != ghp[o[r - 1]] || glp[o[r]] != glp[o[r - 1]];
   }));
   par::fill(ctx, hd + U, 1, G);
@@ -231,7 +231,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   std::uint8_t* tf = out.flags.data();
   par::Buffer<std::int8_t, B> expect(ctx, static_cast<std::size_t>(U));  // bit 0: +1 seen, bit 1: −1 seen
   std::int8_t* ex = expect.data();
-  par::parallel_for(ctx, U, [=] GDEL_HD(I64 u) {
+  par::parallel_for(ctx, U, [=] GDEL_LAMBDA(I64 u) {
     uh[u] = ghp[o[hd[u]]];
     ul[u] = glp[o[hd[u]]];
     std::int8_t e = 0;
@@ -247,13 +247,13 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   // 3. exact orientation of every site tet (sorted order)
   par::Buffer<std::int8_t, B> sg(ctx, static_cast<std::size_t>(U));
   std::int8_t* sp = sg.data();
-  auto pt = [=] GDEL_HD(U64 key, int half) { return X + 3 * I64(half ? std::int32_t(key & 0xffffffffu) : std::int32_t(key >> 32)); };
+  auto pt = [=] GDEL_LAMBDA(U64 key, int half) { return X + 3 * I64(half ? std::int32_t(key & 0xffffffffu) : std::int32_t(key >> 32)); };
   par::two_stage_signs(
       ctx, U, sp,
-      [=] GDEL_HD(I64 u) -> std::int8_t {
+      [=] GDEL_LAMBDA(I64 u) -> std::int8_t {
         return static_cast<std::int8_t>(geom::orient3d_filter(pt(uh[u], 0), pt(uh[u], 1), pt(ul[u], 0), pt(ul[u], 1)));
       },
-      [=] GDEL_HD(I64 u, double* work) -> std::int8_t {
+      [=] GDEL_LAMBDA(I64 u, double* work) -> std::int8_t {
         return static_cast<std::int8_t>(
             geom::orient3d_exact(pt(uh[u], 0), pt(uh[u], 1), pt(ul[u], 0), pt(ul[u], 1), work));
       },
@@ -261,7 +261,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   {
     par::Buffer<I64, B> f(ctx, static_cast<std::size_t>(3 * U));
     I64* fp = f.data();
-    par::parallel_for(ctx, U, [=] GDEL_HD(I64 u) {
+    par::parallel_for(ctx, U, [=] GDEL_LAMBDA(I64 u) {
       const int s = sp[u];
       fp[u] = s == 0;
       fp[U + u] = (s > 0 && (ex[u] & 2)) || (s < 0 && (ex[u] & 1));
@@ -279,7 +279,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   par::Buffer<U64, B> fh(ctx, static_cast<std::size_t>(F)), fl(ctx, static_cast<std::size_t>(F));
   U64* fhp = fh.data();
   U64* flp = fl.data();
-  par::parallel_for(ctx, U, [=] GDEL_HD(I64 u) {
+  par::parallel_for(ctx, U, [=] GDEL_LAMBDA(I64 u) {
     const std::int32_t v[4] = {std::int32_t(uh[u] >> 32), std::int32_t(uh[u] & 0xffffffffu),
                                std::int32_t(ul[u] >> 32), std::int32_t(ul[u] & 0xffffffffu)};
     for (int i = 0; i < 4; ++i) {
@@ -300,7 +300,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   const I64* fo = ford.data();
   par::Buffer<I64, B> fheads(ctx, static_cast<std::size_t>(F + 1));
   I64* fhd = fheads.data();
-  I64 NF = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(F), fhd, [=] GDEL_HD(I64 r) {
+  I64 NF = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(F), fhd, [=] GDEL_LAMBDA(I64 r) {
     const I64 a = fo[r];
     if (fhp[a] == ~U64(0)) return false;
     return r == 0 || fhp[a] != fhp[fo[r - 1]] || flp[a] != flp[fo[r - 1]];
@@ -308,21 +308,21 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   // runs end at the next head, or where the flat tets' sentinel keys begin
   par::Buffer<I64, B> fend(ctx, static_cast<std::size_t>(std::max<I64>(NF, 1)));
   I64* fe = fend.data();
-  par::parallel_for(ctx, NF, [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, NF, [=] GDEL_LAMBDA(I64 j) {
     I64 r = fhd[j] + 1;
     while (r < F && fhp[fo[r]] == fhp[fo[fhd[j]]] && flp[fo[r]] == flp[fo[fhd[j]]]) ++r;
     fe[j] = r;
   });
   // side of the apex of facet i of tet u (sorted order, orientation s): moving vertex i
   // to the end is a cycle of length 4 − i, so orient(facet, apex) = s · (−1)^(3−i)
-  auto side = [=] GDEL_HD(I64 f) -> int {
+  auto side = [=] GDEL_LAMBDA(I64 f) -> int {
     const int i = static_cast<int>(f & 3);
     const int s = sp[f >> 2];
     return ((3 - i) & 1) ? -s : s;
   };
   par::Buffer<std::int8_t, B> kind(ctx, static_cast<std::size_t>(std::max<I64>(NF, 1)));  // 0 open 1 pair 2 over 3 same
   std::int8_t* kp = kind.data();
-  par::parallel_for(ctx, NF, [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, NF, [=] GDEL_LAMBDA(I64 j) {
     const I64 len = fe[j] - fhd[j];
     if (len == 1) kp[j] = 0;
     else if (len > 2) kp[j] = 2;
@@ -331,7 +331,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   // pairs: insphere of the first tet (made positive) with the other tet's apex
   par::Buffer<std::int8_t, B> ins(ctx, static_cast<std::size_t>(std::max<I64>(NF, 1)));
   std::int8_t* ip = ins.data();
-  auto tet_pts = [=] GDEL_HD(I64 u, const double* p[4]) {
+  auto tet_pts = [=] GDEL_LAMBDA(I64 u, const double* p[4]) {
     p[0] = pt(uh[u], 0);
     p[1] = pt(uh[u], 1);
     p[2] = pt(ul[u], 0);
@@ -342,7 +342,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
       p[1] = t;
     }
   };
-  auto apex = [=] GDEL_HD(I64 f) {
+  auto apex = [=] GDEL_LAMBDA(I64 f) {
     const int i = static_cast<int>(f & 3);
     const I64 u = f >> 2;
     const U64 k = i < 2 ? uh[u] : ul[u];
@@ -350,13 +350,13 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   };
   par::two_stage_signs(
       ctx, NF, ip,
-      [=] GDEL_HD(I64 j) -> std::int8_t {
+      [=] GDEL_LAMBDA(I64 j) -> std::int8_t {
         if (kp[j] != 1) return 0;
         const double* p[4];
         tet_pts(fo[fhd[j]] >> 2, p);
         return static_cast<std::int8_t>(geom::insphere_filter(p[0], p[1], p[2], p[3], apex(fo[fhd[j] + 1])));
       },
-      [=] GDEL_HD(I64 j, double* work) -> std::int8_t {
+      [=] GDEL_LAMBDA(I64 j, double* work) -> std::int8_t {
         const double* p[4];
         tet_pts(fo[fhd[j]] >> 2, p);
         return static_cast<std::int8_t>(geom::insphere_exact(p[0], p[1], p[2], p[3], apex(fo[fhd[j] + 1]), work));
@@ -365,7 +365,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
   {
     par::Buffer<I64, B> f(ctx, static_cast<std::size_t>(5 * std::max<I64>(NF, 1)));
     I64* fp = f.data();
-    par::parallel_for(ctx, NF, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx, NF, [=] GDEL_LAMBDA(I64 j) {
       fp[j] = kp[j] == 0;
       fp[NF + j] = kp[j] == 2;
       fp[2 * NF + j] = kp[j] == 3;
@@ -384,7 +384,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
     par::Buffer<std::uint8_t, B> fb(ctx, static_cast<std::size_t>(F));
     std::uint8_t* fbp = fb.data();
     par::fill(ctx, fbp, static_cast<std::size_t>(F), std::uint8_t(0));
-    par::parallel_for(ctx, NF, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx, NF, [=] GDEL_LAMBDA(I64 j) {
       const std::uint8_t bit = kp[j] == 0   ? kDualOpenFacet
                                : kp[j] == 2 ? kDualOversharedFacet
                                : kp[j] == 3 ? kDualOverlappingFacet
@@ -393,7 +393,7 @@ Dual<B> dual_of_colouring(par::Context<B>& ctx, const std::int32_t* site, int W,
                                             : 0;
       for (I64 r = fhd[j]; r < fe[j]; ++r) fbp[fo[r]] = bit;
     });
-    par::parallel_for(ctx, U, [=] GDEL_HD(I64 u) {
+    par::parallel_for(ctx, U, [=] GDEL_LAMBDA(I64 u) {
       tf[u] = static_cast<std::uint8_t>(tf[u] | fbp[4 * u] | fbp[4 * u + 1] | fbp[4 * u + 2] | fbp[4 * u + 3]);
     });
   }

@@ -135,12 +135,12 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   st.grid = W;
   const std::int32_t* site = dv.site.data();
   const std::int32_t* vox = dv.voxel.data();
-  auto voxel_of = [=] GDEL_HD(std::int64_t i) {
+  auto voxel_of = [=] GDEL_LAMBDA(std::int64_t i) {
     return (std::int64_t(vox[3 * i + 2]) * W + vox[3 * i + 1]) * W + vox[3 * i];
   };
   Buffer<vid_t, B> S(ctx, static_cast<std::size_t>(m));  // the sites, ascending internal ids
   std::int64_t k = static_cast<std::int64_t>(par::select_indices(
-      ctx, static_cast<std::size_t>(m), S.data(), [=] GDEL_HD(vid_t i) { return site[voxel_of(i)] == i; }));
+      ctx, static_cast<std::size_t>(m), S.data(), [=] GDEL_LAMBDA(vid_t i) { return site[voxel_of(i)] == i; }));
   S.resize(static_cast<std::size_t>(k));
   st.grid_sites = k;
   st.stages.push_back({"grid initial: sample (coarse grid " + std::to_string(W) + "^3)", since(t0)});
@@ -158,11 +158,11 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
     const double* X = P.data();
     const std::int64_t* sd = sid.data();
     const vid_t* Sp = S.data();
-    par::parallel_for(ctx, k, [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(ctx, k, [=] GDEL_LAMBDA(std::int64_t j) {
       for (int a = 0; a < 3; ++a) pp[3 * j + a] = X[3 * std::int64_t(Sp[j]) + a];
       sp[j] = sd[Sp[j]];
     });
-    par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { sp[k] = sd[m]; });
+    par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { sp[k] = sd[m]; });
   }
   int Wf = 0;
   Dual<B> dual = [&] {
@@ -219,12 +219,12 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   {
     vid_t* tp = tv.data();
     const vid_t* Sp = S.data();
-    par::parallel_for(ctx, 4 * nt, [=] GDEL_HD(std::int64_t i) { tp[i] = Sp[tp[i]]; });
+    par::parallel_for(ctx, 4 * nt, [=] GDEL_LAMBDA(std::int64_t i) { tp[i] = Sp[tp[i]]; });
   }
   Buffer<std::int64_t, B> hull(ctx, static_cast<std::size_t>(4 * nt + 1));
   std::int64_t* hp = hull.data();
   const std::int32_t* np = tn.data();
-  par::parallel_for(ctx, 4 * nt, [=] GDEL_HD(std::int64_t f) { hp[f] = np[f] < 0 ? 1 : 0; });
+  par::parallel_for(ctx, 4 * nt, [=] GDEL_LAMBDA(std::int64_t f) { hp[f] = np[f] < 0 ? 1 : 0; });
   const std::int64_t nh = par::counts_to_offsets(ctx, hp, static_cast<std::size_t>(4 * nt));
   const std::int64_t ntot = nt + nh;
   Buffer<mesh::Tet, B> tets(ctx, static_cast<std::size_t>(ntot));
@@ -232,7 +232,7 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   mesh::Tet* T = tets.data();
   fid_t* O = opp.data();
   const vid_t* tp = tv.data();
-  par::parallel_for(ctx, nt, [=] GDEL_HD(std::int64_t t) {
+  par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(std::int64_t t) {
     for (int i = 0; i < 4; ++i) T[t].v[i] = tp[4 * t + i];
     for (int i = 0; i < 4; ++i) {
       const std::int64_t f = 4 * t + i;
@@ -264,7 +264,7 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
     Buffer<fid_t, B> ev(ctx, static_cast<std::size_t>(3 * nh));
     std::uint64_t* ekp = ek.data();
     fid_t* evp = ev.data();
-    par::parallel_for(ctx, nh, [=] GDEL_HD(std::int64_t h) {
+    par::parallel_for(ctx, nh, [=] GDEL_LAMBDA(std::int64_t h) {
       const std::int64_t c = nt + h;
       for (int l = 0; l < 3; ++l) {
         const vid_t a = T[c].v[(l + 1) % 3], b = T[c].v[(l + 2) % 3];
@@ -277,7 +277,7 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
     Buffer<std::int64_t, B> bad(ctx, static_cast<std::size_t>(3 * nh / 2 + 1));
     std::int64_t* bp = bad.data();
     const std::int64_t ne = 3 * nh / 2;
-    par::parallel_for(ctx, ne, [=] GDEL_HD(std::int64_t e) {
+    par::parallel_for(ctx, ne, [=] GDEL_LAMBDA(std::int64_t e) {
       // a closed hull has every edge in exactly two hull facets (the certificate checked it)
       const bool ok = ekp[2 * e] == ekp[2 * e + 1] && (e == 0 || ekp[2 * e - 1] != ekp[2 * e]);
       bp[e] = ok ? 0 : 1;
@@ -296,7 +296,7 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   Buffer<tid_t, B> vstart(ctx, static_cast<std::size_t>(m));
   tid_t* vs = vstart.data();
   par::fill(ctx, vs, static_cast<std::size_t>(m), tid_t(INT_MAX));
-  par::parallel_for(ctx, ntot, [=] GDEL_HD(std::int64_t t) {
+  par::parallel_for(ctx, ntot, [=] GDEL_LAMBDA(std::int64_t t) {
     for (int i = 0; i < 4; ++i)
       if (T[t].v[i] != inf) par::atomic_min(vs + T[t].v[i], static_cast<tid_t>(t));
   });
@@ -310,9 +310,9 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   Buffer<tid_t, B> opp_t(ctx, static_cast<std::size_t>(4 * ntot));
   Buffer<std::uint8_t, B> opp_f(ctx, static_cast<std::size_t>(4 * ntot));
   const mesh::MeshView mv{T, opp_t.data(), opp_f.data(), state.data(), fflag.data()};
-  par::parallel_for(ctx, 4 * ntot, [=] GDEL_HD(std::int64_t f) { mv.set_opp(f, O[f]); });
+  par::parallel_for(ctx, 4 * ntot, [=] GDEL_LAMBDA(std::int64_t f) { mv.set_opp(f, O[f]); });
   const flip::Geo g = alg.geo();
-  auto locate = [=] GDEL_HD(std::int64_t q, double* work, bool exact) -> bool {
+  auto locate = [=] GDEL_LAMBDA(std::int64_t q, double* work, bool exact) -> bool {
     const vid_t s = site[voxel_of(q)];
     if (s == static_cast<vid_t>(q)) {
       vt[q] = -1;  // a vertex of the mesh
@@ -326,17 +326,17 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   };
   Buffer<std::int8_t, B> und(ctx, static_cast<std::size_t>(m));
   st.exact_evaluations += flip::fast_then_exact(
-      ctx, m, und.data(), [=] GDEL_HD(std::int64_t q) { return locate(q, nullptr, false); },
-      [=] GDEL_HD(std::int64_t q, double* work) { locate(q, work, true); });
+      ctx, m, und.data(), [=] GDEL_LAMBDA(std::int64_t q) { return locate(q, nullptr, false); },
+      [=] GDEL_LAMBDA(std::int64_t q, double* work) { locate(q, work, true); });
   Buffer<vid_t, B> todo(ctx, static_cast<std::size_t>(m));
   std::int64_t nu = static_cast<std::int64_t>(
-      par::select_indices(ctx, static_cast<std::size_t>(m), todo.data(), [=] GDEL_HD(vid_t q) { return vt[q] != -1; }));
+      par::select_indices(ctx, static_cast<std::size_t>(m), todo.data(), [=] GDEL_LAMBDA(vid_t q) { return vt[q] != -1; }));
   todo.resize(static_cast<std::size_t>(nu));
   {
     const vid_t* up = todo.data();
     Buffer<std::int64_t, B> capped(ctx, static_cast<std::size_t>(std::max<std::int64_t>(nu, 1)));
     std::int64_t* cp = capped.data();
-    par::parallel_for(ctx, nu, [=] GDEL_HD(std::int64_t i) { cp[i] = vt[up[i]] < 0 ? 1 : 0; });
+    par::parallel_for(ctx, nu, [=] GDEL_LAMBDA(std::int64_t i) { cp[i] = vt[up[i]] < 0 ? 1 : 0; });
     if (par::reduce_sum(ctx, cp, static_cast<std::size_t>(nu)) != 0) return fallback("a location walk was capped");
   }
   st.stages.push_back({"grid initial: point location (walks)", since(t0)});

@@ -21,14 +21,14 @@ void match_open_faces(par::Context<B>& ctx, const par::Buffer<vid_t, B>& tets, p
   using U64 = std::uint64_t;
   std::int32_t* np = nbr.data();
   const vid_t* tp = tets.data();
-  auto open = [=] GDEL_HD(I64 f) { return np[f] == -2; };
+  auto open = [=] GDEL_LAMBDA(I64 f) { return np[f] == -2; };
   // counted first: few open faces beside the 4 nout faces
   const std::size_t k = static_cast<std::size_t>(par::count_indices(ctx, static_cast<std::size_t>(4 * nout), open));
   if (k == 0) return;
   par::Buffer<I64, B> faces(ctx, k);
   par::select_indices(ctx, static_cast<std::size_t>(4 * nout), faces.data(), open);
   const I64* fp = faces.data();
-  auto face = [=] GDEL_HD(I64 f, vid_t* w) {
+  auto face = [=] GDEL_LAMBDA(I64 f, vid_t* w) {
     const I64 t = f >> 2;
     const int i = static_cast<int>(f & 3);
     vid_t a = tp[4 * t + face_vertex(i, 0)], b = tp[4 * t + face_vertex(i, 1)], c = tp[4 * t + face_vertex(i, 2)];
@@ -41,21 +41,21 @@ void match_open_faces(par::Context<B>& ctx, const par::Buffer<vid_t, B>& tets, p
   par::Buffer<I64, B> val(ctx, k);
   U64* kp = key.data();
   I64* vp = val.data();
-  par::parallel_for(ctx, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, static_cast<I64>(k), [=] GDEL_LAMBDA(I64 j) {
     vid_t w[3];
     face(fp[j], w);
     kp[j] = static_cast<std::uint32_t>(w[2]);
     vp[j] = fp[j];
   });
   par::sort_pairs(ctx, kp, vp, k);
-  par::parallel_for(ctx, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, static_cast<I64>(k), [=] GDEL_LAMBDA(I64 j) {
     vid_t w[3];
     face(vp[j], w);
     kp[j] = (static_cast<U64>(static_cast<std::uint32_t>(w[0])) << 32) | static_cast<std::uint32_t>(w[1]);
   });
   par::sort_pairs(ctx, kp, vp, k);
   const I64 kk = static_cast<I64>(k);
-  par::parallel_for(ctx, kk, [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, kk, [=] GDEL_LAMBDA(I64 j) {
     vid_t w[3], x[3];
     face(vp[j], w);
     bool paired = false;

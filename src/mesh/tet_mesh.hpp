@@ -98,7 +98,7 @@ class TetMesh {
     par::Buffer<std::int64_t, B> a(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
     std::int64_t* ap = a.data();
     std::int64_t n = size();
-    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) { ap[t] = (st[t] & kAlive) ? 1 : 0; });
+    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) { ap[t] = (st[t] & kAlive) ? 1 : 0; });
     return par::reduce_sum(*ctx_, ap, static_cast<std::size_t>(n));
   }
 
@@ -120,7 +120,7 @@ class TetMesh {
     grow(state_, 1);
     grow(fflag_, 4);
     std::uint8_t* st = state_.data();
-    par::parallel_for(*ctx_, cap - old, [=] GDEL_HD(std::int64_t k) { st[old + k] = 0; });
+    par::parallel_for(*ctx_, cap - old, [=] GDEL_LAMBDA(std::int64_t k) { st[old + k] = 0; });
   }
 
   // Reserves k slots (growing the arrays if needed) and returns their source. The
@@ -141,7 +141,7 @@ class TetMesh {
     tid_t* st = free_.data();
     std::uint8_t* state = state_.data();
     const std::int64_t top = free_count_;
-    par::parallel_for(*ctx_, k, [=] GDEL_HD(std::int64_t j) {
+    par::parallel_for(*ctx_, k, [=] GDEL_LAMBDA(std::int64_t j) {
       state[slots[j]] = 0;
       st[top + j] = slots[j];
     });
@@ -164,7 +164,7 @@ class TetMesh {
     M::copy(*ctx_, free_.data(), o.free_.data(), static_cast<std::size_t>(o.free_count_) * sizeof(tid_t));
     if (size_ > n) {
       std::uint8_t* st = state_.data();
-      par::parallel_for(*ctx_, size_ - n, [=] GDEL_HD(std::int64_t k) { st[n + k] = 0; });
+      par::parallel_for(*ctx_, size_ - n, [=] GDEL_LAMBDA(std::int64_t k) { st[n + k] = 0; });
     }
     size_ = n;
     free_count_ = o.free_count_;
@@ -182,9 +182,9 @@ class TetMesh {
     par::Buffer<tid_t, B> remap(*ctx_, static_cast<std::size_t>(n + 1));
     tid_t* rm = remap.data();
     const std::uint8_t* st = state_.data();
-    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) { rm[t] = (st[t] & kAlive) ? 1 : 0; });
+    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) { rm[t] = (st[t] & kAlive) ? 1 : 0; });
     tid_t alive = par::counts_to_offsets(*ctx_, rm, static_cast<std::size_t>(n));
-    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
+    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) {
       if (!(st[t] & kAlive)) rm[t] = -1;
     });
     apply_remap(rm, alive, shrink);
@@ -202,17 +202,17 @@ class TetMesh {
     std::uint64_t* kp = k.data();
     tid_t* ip = ids.data();
     MeshView v = view();
-    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
+    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) {
       kp[t] = v.alive(static_cast<tid_t>(t)) ? static_cast<std::uint64_t>(key(v.tet[t])) : ~std::uint64_t(0);
       ip[t] = static_cast<tid_t>(t);
     });
     par::sort_pairs(*ctx_, kp, ip, static_cast<std::size_t>(n));
     par::Buffer<tid_t, B> remap(*ctx_, static_cast<std::size_t>(n + 1));
     tid_t* rm = remap.data();
-    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t j) { rm[ip[j]] = kp[j] == ~std::uint64_t(0) ? -1 : tid_t(j); });
+    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t j) { rm[ip[j]] = kp[j] == ~std::uint64_t(0) ? -1 : tid_t(j); });
     par::Buffer<std::int64_t, B> a(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(n, 1)));
     std::int64_t* ap = a.data();
-    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) { ap[t] = rm[t] >= 0 ? 1 : 0; });
+    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) { ap[t] = rm[t] >= 0 ? 1 : 0; });
     const std::int64_t alive = par::reduce_sum(*ctx_, ap, static_cast<std::size_t>(n));
     apply_remap(rm, alive);
     return remap;
@@ -226,14 +226,14 @@ class TetMesh {
     const std::int64_t n = size();
     const std::int64_t cap = std::max<std::int64_t>(shrink ? alive : capacity(), 1);
     const std::uint8_t* st = state_.data();
-    remap_records(tet_, 1, cap, rm, [] GDEL_HD(const Tet& x) { return x; });
-    remap_records(opp_t_, 4, cap, rm, [=] GDEL_HD(tid_t u) { return u < 0 ? u : rm[u]; });
-    remap_records(opp_f_, 4, cap, rm, [] GDEL_HD(std::uint8_t x) { return x; });
-    remap_records(fflag_, 4, cap, rm, [] GDEL_HD(std::uint8_t x) { return x; });
+    remap_records(tet_, 1, cap, rm, [] GDEL_LAMBDA(const Tet& x) { return x; });
+    remap_records(opp_t_, 4, cap, rm, [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; });
+    remap_records(opp_f_, 4, cap, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
+    remap_records(fflag_, 4, cap, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
     par::Buffer<std::uint8_t, B> s2(*ctx_, static_cast<std::size_t>(cap));
     std::uint8_t* sp = s2.data();
-    par::parallel_for(*ctx_, cap, [=] GDEL_HD(std::int64_t k) { sp[k] = 0; });
-    par::parallel_for(*ctx_, n, [=] GDEL_HD(std::int64_t t) {
+    par::parallel_for(*ctx_, cap, [=] GDEL_LAMBDA(std::int64_t k) { sp[k] = 0; });
+    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) {
       if (rm[t] >= 0) sp[rm[t]] = st[t];
     });
     state_ = std::move(s2);
@@ -249,7 +249,7 @@ class TetMesh {
     par::Buffer<T, B> nb(*ctx_, static_cast<std::size_t>(per * cap));
     T* dst = nb.data();
     const T* src = buf.data();
-    par::parallel_for(*ctx_, size(), [=] GDEL_HD(std::int64_t t) {
+    par::parallel_for(*ctx_, size(), [=] GDEL_LAMBDA(std::int64_t t) {
       const tid_t d = rm[t];
       if (d < 0) return;
       for (std::int64_t i = 0; i < per; ++i) dst[per * std::int64_t(d) + i] = x(src[per * t + i]);
@@ -269,7 +269,7 @@ class TetMesh {
   // Slots [0, count / 4) from count packed facets in backend memory.
   void set_opp_from(const fid_t* src, std::int64_t count) {
     const MeshView v = view();
-    par::parallel_for(*ctx_, count, [=] GDEL_HD(std::int64_t k) { v.set_opp(k, src[k]); });
+    par::parallel_for(*ctx_, count, [=] GDEL_LAMBDA(std::int64_t k) { v.set_opp(k, src[k]); });
   }
   void release_opp() {
     opp_t_.release();

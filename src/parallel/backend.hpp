@@ -1,8 +1,9 @@
 // Backend tags and the execution context of the parallel layer.
 //
 // Algorithm code is written once as templates over a backend tag B (Cpu or Cuda)
-// and per-element GDEL_HD functors. Host translation units (*.cpp, Thrust OpenMP
-// system) instantiate B = Cpu; CUDA translation units (*.cu) instantiate B = Cuda.
+// and per-element functors (GDEL_HD functions, GDEL_LAMBDA lambdas: core/macros.hpp).
+// Host translation units (*.cpp, Thrust OpenMP system) instantiate B = Cpu; CUDA
+// translation units (*.cu) instantiate B = Cuda.
 // Synchronisation: every primitive is enqueued on the context's stream; only calls
 // documented as "synchronizes" (those returning a host value, to_host, ...) wait.
 #pragma once

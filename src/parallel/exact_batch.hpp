@@ -72,15 +72,15 @@ template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
                              std::size_t work_doubles) {
   if (n <= 0) return 0;
-  parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
+  parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
   // counted first: the list is as long as the undecided items (few), not n
-  auto und = [=] GDEL_HD(std::int64_t i) { return undecided[i] != 0; };
+  auto und = [=] GDEL_LAMBDA(std::int64_t i) { return undecided[i] != 0; };
   std::int64_t m = count_indices(ctx, static_cast<std::size_t>(n), und);
   if (m == 0) return 0;
   Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(m));
   std::int64_t* lp = list.data();
   select_indices(ctx, static_cast<std::size_t>(n), lp, und);
-  for_each_with_scratch(ctx, m, work_doubles, [=] GDEL_HD(std::int64_t k, double* work) { exact(lp[k], work); });
+  for_each_with_scratch(ctx, m, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[k], work); });
   return m;
 }
 
@@ -93,11 +93,11 @@ std::int64_t two_stage_signs(Context<B>& ctx, std::int64_t n, std::int8_t* out, 
   Buffer<std::int8_t, B> und(ctx, static_cast<std::size_t>(n));
   return fast_then_exact(
       ctx, n, und.data(),
-      [=] GDEL_HD(std::int64_t i) {
+      [=] GDEL_LAMBDA(std::int64_t i) {
         out[i] = filter(i);
         return out[i] != kUndecided;
       },
-      [=] GDEL_HD(std::int64_t i, double* work) { out[i] = exact(i, work); }, work_doubles);
+      [=] GDEL_LAMBDA(std::int64_t i, double* work) { out[i] = exact(i, work); }, work_doubles);
 }
 
 }  // namespace gdel::par

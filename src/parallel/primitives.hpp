@@ -322,24 +322,24 @@ std::size_t unique(Context<Cuda>& c, T* data, std::size_t n) {
 // out[i] = value for i in [0, n).
 template <class B, class T>
 void fill(Context<B>& c, T* out, std::size_t n, T value) {
-  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_HD(std::int64_t i) { out[i] = value; });
+  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_LAMBDA(std::int64_t i) { out[i] = value; });
 }
 // out[i] = first + i.
 template <class B, class T>
 void sequence(Context<B>& c, T* out, std::size_t n, T first = T(0)) {
-  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_HD(std::int64_t i) { out[i] = first + T(i); });
+  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_LAMBDA(std::int64_t i) { out[i] = first + T(i); });
 }
 // out[i] = in[map[i]].
 template <class B, class T, class I>
 void gather(Context<B>& c, const I* map, const T* in, T* out, std::size_t n) {
-  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_HD(std::int64_t i) { out[i] = in[map[i]]; });
+  parallel_for(c, static_cast<std::int64_t>(n), [=] GDEL_LAMBDA(std::int64_t i) { out[i] = in[map[i]]; });
 }
 // Exclusive scan in place of counts; returns the total (synchronizes). counts has
 // n + 1 elements; counts[n] receives the total.
 template <class B, class T>
 T counts_to_offsets(Context<B>& c, T* counts, std::size_t n) {
   // counts[n] is scratch; set it to 0 so the scan over n + 1 gives the total there.
-  parallel_for(c, 1, [=] GDEL_HD(std::int64_t) { counts[n] = T(0); });
+  parallel_for(c, 1, [=] GDEL_LAMBDA(std::int64_t) { counts[n] = T(0); });
   exclusive_scan(c, counts, counts, n + 1);
   T total;
   detail::Memory<B>::to_host(c, &total, counts + n, sizeof(T));

@@ -31,7 +31,7 @@ void lexicographic_sort(par::Context<B>& ctx, const double* X, std::int64_t* idx
   par::Buffer<std::uint64_t, B> key(ctx, static_cast<std::size_t>(n));
   std::uint64_t* kp = key.data();
   for (int axis = 2; axis >= 0; --axis) {  // LSD passes: z, y, x (each stable)
-    par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t k) { kp[k] = orderable(X[3 * idx[k] + axis]); });
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t k) { kp[k] = orderable(X[3 * idx[k] + axis]); });
     par::sort_pairs(ctx, kp, idx, static_cast<std::size_t>(n), 64);
   }
 }
@@ -52,7 +52,7 @@ void hilbert_order(par::Context<B>& ctx, const double* X, std::int64_t n, const 
   par::Buffer<std::uint64_t, B> key(ctx, keys ? 0 : static_cast<std::size_t>(n));
   std::uint64_t* kp = keys ? keys : key.data();
   const sfc::Quantizer q = sfc::Quantizer::from_box(lo, hi);
-  par::parallel_for(ctx, n, [=] GDEL_HD(std::int64_t i) {
+  par::parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) {
     kp[i] = sfc::hilbert_key(q, X[3 * i], X[3 * i + 1], X[3 * i + 2]);
     order[i] = i;
   });
@@ -82,7 +82,7 @@ std::int64_t distinct_hilbert_order(par::Context<B>& ctx, const double* X, std::
   I64* op = ord.data();
   hilbert_order(ctx, X, n, lo, hi, op, kp);
   const sfc::Quantizer q = sfc::Quantizer::from_box(lo, hi);
-  auto tied = [=] GDEL_HD(I64 k) { return (k > 0 && kp[k - 1] == kp[k]) || (k + 1 < n && kp[k + 1] == kp[k]); };
+  auto tied = [=] GDEL_LAMBDA(I64 k) { return (k > 0 && kp[k - 1] == kp[k]) || (k + 1 < n && kp[k + 1] == kp[k]); };
   const I64 nt = par::count_indices(ctx, static_cast<std::size_t>(n), tied);
   if (nt > 0) {
     par::Buffer<I64, B> pos(ctx, static_cast<std::size_t>(nt));
@@ -92,22 +92,22 @@ std::int64_t distinct_hilbert_order(par::Context<B>& ctx, const double* X, std::
     I64* sp = sub.data();
     std::uint64_t* k2p = k2.data();
     par::select_indices(ctx, static_cast<std::size_t>(n), pp, tied);
-    par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) { sp[j] = op[pp[j]]; });
+    par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 j) { sp[j] = op[pp[j]]; });
     // stable passes: the coordinates, then the key (the runs, in their order)
     lexicographic_sort(ctx, X, sp, nt);
-    par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 j) {
       k2p[j] = sfc::hilbert_key(q, X[3 * sp[j]], X[3 * sp[j] + 1], X[3 * sp[j] + 2]);
     });
     par::sort_pairs(ctx, k2p, sp, static_cast<std::size_t>(nt), sfc::kKeyBits);
-    par::parallel_for(ctx, nt, [=] GDEL_HD(I64 j) { op[pp[j]] = sp[j]; });  // the runs, re-sorted in place
+    par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 j) { op[pp[j]] = sp[j]; });  // the runs, re-sorted in place
   }
   key.release();
   // groups of equal points: st[k + 1] != st[k] at a group's first, st[k] its number
   par::Buffer<I64, B> start(ctx, static_cast<std::size_t>(n + 1));
   I64* st = start.data();
-  par::parallel_for(ctx, n, [=] GDEL_HD(I64 k) { st[k] = (k == 0 || !same_point(X, op[k - 1], op[k])) ? 1 : 0; });
+  par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 k) { st[k] = (k == 0 || !same_point(X, op[k - 1], op[k])) ? 1 : 0; });
   const I64 m = par::counts_to_offsets(ctx, st, static_cast<std::size_t>(n));
-  par::parallel_for(ctx, n, [=] GDEL_HD(I64 k) {
+  par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 k) {
     if (st[k + 1] == st[k]) return;
     I64 best = op[k];
     for (I64 j = k + 1; W && j < n && st[j + 1] == st[j]; ++j)

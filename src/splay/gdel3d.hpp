@@ -56,7 +56,7 @@ class GDel3D {
     const vid_t inf = g.inf;
     const I64 ex = flip::facet_signs(ctx, mv, nt, g, sg);
     par::fill(ctx, fvp, static_cast<std::size_t>(m), std::int8_t(0));
-    par::parallel_for(ctx, 4 * nt, [=] GDEL_HD(I64 f) {
+    par::parallel_for(ctx, 4 * nt, [=] GDEL_LAMBDA(I64 f) {
       if (sg[f] <= 0) return;
       const vid_t* v = mv.tet[f >> 2].v;
       const int i = static_cast<int>(f & 3);
@@ -76,11 +76,11 @@ class GDel3D {
     par::fill(ctx_, want, wanted.size(), std::int32_t(-1));
     const vid_t* vp = verts.data();
     par::parallel_for(ctx_, static_cast<I64>(verts.size()),
-                      [=] GDEL_HD(I64 i) { want[vp[i]] = static_cast<std::int32_t>(i); });
+                      [=] GDEL_LAMBDA(I64 i) { want[vp[i]] = static_cast<std::int32_t>(i); });
     const mesh::MeshView mv = mesh_.view();
     const I64 nt = mesh_.size();
     const vid_t inf = g_.inf;
-    auto hits = [=] GDEL_HD(I64 t) -> int {
+    auto hits = [=] GDEL_LAMBDA(I64 t) -> int {
       int c = 0;
       for (int i = 0; i < 4; ++i) {
         const vid_t v = mv.tet[t].v[i];
@@ -91,18 +91,18 @@ class GDel3D {
     // the tets with a wanted vertex first (few: memory by them, not by the mesh)
     // (not const: nvcc 13.0 crashes, "i_copy_expr_tree", on a const local whose
     // initializer holds an extended lambda)
-    auto has_wanted = [=] GDEL_HD(I64 t) { return hits(t) > 0; };
+    auto has_wanted = [=] GDEL_LAMBDA(I64 t) { return hits(t) > 0; };
     I64 nl = par::count_indices(ctx_, static_cast<std::size_t>(nt), has_wanted);
     Buffer<tid_t, B> list(ctx_, static_cast<std::size_t>(std::max<I64>(nl, 1)));
     tid_t* lp = list.data();
     par::select_indices(ctx_, static_cast<std::size_t>(nt), lp, has_wanted);
     Buffer<I64, B> cnt(ctx_, static_cast<std::size_t>(nl + 1));
     I64* cp = cnt.data();
-    par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 j) { cp[j] = hits(lp[j]); });
+    par::parallel_for(ctx_, nl, [=] GDEL_LAMBDA(I64 j) { cp[j] = hits(lp[j]); });
     const I64 total = par::counts_to_offsets(ctx_, cp, static_cast<std::size_t>(nl));
     Buffer<U64, B> keys(ctx_, static_cast<std::size_t>(total));
     U64* kp = keys.data();
-    par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx_, nl, [=] GDEL_LAMBDA(I64 j) {
       I64 k = cp[j];
       const tid_t t = lp[j];
       for (int i = 0; i < 4; ++i) {
@@ -128,7 +128,7 @@ class GDel3D {
     std::int32_t* cp = caps.data();
     const U64* kp = keys.data();
     const I64* hp = heads.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
       gvp[j] = key_target(kp[hp[j]]);
       cp[j] = static_cast<std::int32_t>(2 * (hp[j + 1] - hp[j]) + 4);
     });
@@ -136,7 +136,7 @@ class GDel3D {
     const StarView sv = sp_.view();
     const mesh::MeshView mv = mesh_.view();
     std::int32_t* ep = sp_.error_ptr();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
       const I64 s = s0 + j;
       const I64 a = hp[j], b = hp[j + 1];
       Tri* T = sv.tri + sv.begin[s];
@@ -236,7 +236,7 @@ class GDel3D {
     const I64 ni = static_cast<I64>(inc.size());
     Buffer<U64, B> lk(ctx_, static_cast<std::size_t>(3 * ni));
     U64* lp = lk.data();
-    par::parallel_for(ctx_, ni, [=] GDEL_HD(I64 i) {
+    par::parallel_for(ctx_, ni, [=] GDEL_LAMBDA(I64 i) {
       const vid_t v = key_target(ip[i]);
       const tid_t t = key_vertex(ip[i]);
       int q = 0;
@@ -264,7 +264,7 @@ class GDel3D {
     const StarView sv = sp_.view();
     Buffer<LinkKey, B> lkeys(ctx_, static_cast<std::size_t>(std::max<I64>(ni, 1)));
     LinkKey* lkp = lkeys.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
       const I64 s = s0 + j;
       const vid_t me = sv.vert[s];
       Tri* T = sv.tri + sv.begin[s];
@@ -344,7 +344,7 @@ class GDel3D {
     const std::int8_t* fvp = fv.data();
     Buffer<vid_t, B> failed(ctx_, static_cast<std::size_t>(m_));
     const std::size_t nf = par::select_indices(ctx_, static_cast<std::size_t>(m_), failed.data(),
-                                               [=] GDEL_HD(I64 v) { return fvp[v] != 0; });
+                                               [=] GDEL_LAMBDA(I64 v) { return fvp[v] != 0; });
     failed.resize(nf);
     res_.failed = static_cast<I64>(nf);
     if (nf == 0) return;
@@ -372,7 +372,7 @@ class GDel3D {
     // T tets kept: finite, no vertex with a star, not flat
     Buffer<std::int8_t, B> flat(ctx_, static_cast<std::size_t>(std::max<I64>(nt, 1)));
     std::int8_t* flp = flat.data();
-    auto t_candidate = [=] GDEL_HD(I64 t) -> bool {
+    auto t_candidate = [=] GDEL_LAMBDA(I64 t) -> bool {
       for (int i = 0; i < 4; ++i) {
         const vid_t v = mv.tet[t].v[i];
         if (v == inf || so[v] >= 0) return false;
@@ -381,15 +381,15 @@ class GDel3D {
     };
     res_.exact_evaluations += par::two_stage_signs(
         ctx_, nt, flp,
-        [=] GDEL_HD(I64 t) -> std::int8_t {
+        [=] GDEL_LAMBDA(I64 t) -> std::int8_t {
           return t_candidate(t) ? g.volume_sign_fast(mv.tet[t].v) : std::int8_t(0);
         },
-        [=] GDEL_HD(I64 t, double* work) { return g.volume_sign_exact(mv.tet[t].v, work); },
+        [=] GDEL_LAMBDA(I64 t, double* work) { return g.volume_sign_exact(mv.tet[t].v, work); },
         geom::kPredicateWork);
     // flp[t] > 0: kept; kInfTet: a tet with the vertex at infinity (read below, after
     // the tets array is gone). Star tets: from the stars, each once.
     constexpr std::int8_t kInfTet = -100;
-    par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) {
+    par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {
       if (tet_slot(mv, static_cast<tid_t>(t), inf) >= 0) flp[t] = kInfTet;
     });
     Buffer<I64, B> snum(ctx_);
@@ -398,12 +398,12 @@ class GDel3D {
     // numbering: T tets first, then star tets
     Buffer<I64, B> tnum(ctx_, static_cast<std::size_t>(nt + 1));
     I64* tnp = tnum.data();
-    par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) { tnp[t] = flp[t] > 0 ? 1 : 0; });
+    par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) { tnp[t] = flp[t] > 0 ? 1 : 0; });
     const I64 nkeep = par::counts_to_offsets(ctx_, tnp, static_cast<std::size_t>(nt));
     const I64 nout = nkeep + nstar;
     // flat tets dropped (T tets without star vertices, and star tets)
     res_.flat_removed = par::count_indices(ctx_, static_cast<std::size_t>(nt),
-                                           [=] GDEL_HD(I64 t) { return t_candidate(t) && flp[t] == 0; }) +
+                                           [=] GDEL_LAMBDA(I64 t) { return t_candidate(t) && flp[t] == 0; }) +
                         flat_stars;
     // The mesh is consumed from here on, one array at a time, so that the output is
     // never beside the whole mesh (at 10^8 points: 94 -> 73 bytes per tet at the peak).
@@ -411,7 +411,7 @@ class GDel3D {
     mesh_.face_flags().release();
     tets.resize(static_cast<std::size_t>(4 * nout));
     vid_t* op = tets.data();
-    par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) {
+    par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {
       if (tnp[t + 1] == tnp[t]) return;
       const I64 d = tnp[t];
       for (int i = 0; i < 4; ++i) op[4 * d + i] = mv.tet[t].v[i];
@@ -419,7 +419,7 @@ class GDel3D {
     mesh_.tets().release();
     nbr.resize(static_cast<std::size_t>(4 * nout));
     std::int32_t* np = nbr.data();
-    par::parallel_for(ctx_, nt, [=] GDEL_HD(I64 t) {
+    par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {
       if (tnp[t + 1] == tnp[t]) return;
       const I64 d = tnp[t];
       for (int i = 0; i < 4; ++i) {

@@ -219,10 +219,10 @@ class Splayer {
     const std::int32_t* ic = caps.data();
     Buffer<I64, B> off(ctx_, static_cast<std::size_t>(k + 1));
     I64* op = off.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 i) { op[i] = ic[i]; });
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 i) { op[i] = ic[i]; });
     const I64 total = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(k));
     const I64 base = slots_;
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 i) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 i) {
       const I64 s = s0 + i;
       vp[s] = in[i];
       bp[s] = base + op[i];
@@ -236,7 +236,7 @@ class Splayer {
     tri_.resize(static_cast<std::size_t>(slots_));
     state_.resize(static_cast<std::size_t>(slots_));
     std::uint8_t* sp = state_.data();
-    par::parallel_for(ctx_, total, [=] GDEL_HD(I64 i) { sp[base + i] = kTriFree; });
+    par::parallel_for(ctx_, total, [=] GDEL_LAMBDA(I64 i) { sp[base + i] = kTriFree; });
     nst_ = s0 + k;
     return s0;
   }
@@ -248,11 +248,11 @@ class Splayer {
     std::int32_t* cp = cap_.data();
     Buffer<std::int32_t, B> grow(ctx_, static_cast<std::size_t>(nst_));
     std::int32_t* gp = grow.data();
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) { gp[s] = need[s] > cp[s] ? 1 : 0; });
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) { gp[s] = need[s] > cp[s] ? 1 : 0; });
     if (par::reduce_max(ctx_, gp, static_cast<std::size_t>(nst_), std::int32_t(0)) == 0) return;
     Buffer<I64, B> off(ctx_, static_cast<std::size_t>(nst_ + 1));
     I64* op = off.data();
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) {
       const std::int32_t c = need[s] > cp[s] ? need[s] + need[s] / 4 : cp[s];
       gp[s] = c;
       op[s] = c;
@@ -266,7 +266,7 @@ class Splayer {
     const std::uint8_t* osp = state_.data();
     I64* bp = begin_.data();
     const std::int32_t* np = count_.data();
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) {
       const I64 b = bp[s], d = op[s];
       for (std::int32_t i = 0; i < gp[s]; ++i) {
         if (i < np[s]) {
@@ -277,7 +277,7 @@ class Splayer {
         }
       }
     });
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) {
       bp[s] = op[s];
       cp[s] = gp[s];
     });
@@ -291,12 +291,12 @@ class Splayer {
     const I64 n = static_cast<I64>(keys.size());
     const U64* kp = keys.data();
     Buffer<I64, B> heads(ctx_, static_cast<std::size_t>(n + 1));
-    k = static_cast<I64>(par::select_indices(ctx_, static_cast<std::size_t>(n), heads.data(), [=] GDEL_HD(I64 i) {
+    k = static_cast<I64>(par::select_indices(ctx_, static_cast<std::size_t>(n), heads.data(), [=] GDEL_LAMBDA(I64 i) {
       return i == 0 || key_target(kp[i - 1]) != key_target(kp[i]);
     }));
     I64* hp = heads.data();
     const I64 kk = k;
-    par::parallel_for(ctx_, 1, [=] GDEL_HD(I64) { hp[kk] = n; });
+    par::parallel_for(ctx_, 1, [=] GDEL_LAMBDA(I64) { hp[kk] = n; });
     return heads;
   }
 
@@ -325,7 +325,7 @@ class Splayer {
     Buffer<std::int32_t, B> caps(ctx_, static_cast<std::size_t>(k));
     vid_t* gvp = gv.data();
     std::int32_t* cp = caps.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
       gvp[j] = key_target(lp[lhp[j]]);
       cp[j] = static_cast<std::int32_t>(4 * (lhp[j + 1] - lhp[j]) + 8);
     });
@@ -342,7 +342,7 @@ class Splayer {
       vid_t* ovp = ordv.data();
       const flip::Geo gg = g_;
       const vid_t inf = g_.inf;
-      par::parallel_for(ctx_, nl, [=] GDEL_HD(I64 i) {
+      par::parallel_for(ctx_, nl, [=] GDEL_LAMBDA(I64 i) {
         const vid_t v = key_target(lp[i]), x = key_vertex(lp[i]);
         std::uint32_t bits = 0;  // ∞: distance 0, first
         if (x != inf) {
@@ -362,7 +362,7 @@ class Splayer {
     const vid_t* ov = ordv.data();
     Buffer<I64, B> room(ctx_, static_cast<std::size_t>(k + 1));
     I64* rmp = room.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) { rmp[j] = 2 * (lhp[j + 1] - lhp[j]) + 4; });
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) { rmp[j] = 2 * (lhp[j + 1] - lhp[j]) + 4; });
     const I64 total = par::counts_to_offsets(ctx_, rmp, static_cast<std::size_t>(k));
     Buffer<U64, B> g1(ctx_, static_cast<std::size_t>(std::max<I64>(total, 1)));
     U64* gp = g1.data();
@@ -377,7 +377,7 @@ class Splayer {
     std::int32_t* sdp = seeded.data();
     std::int32_t* ffp = ffm.data();
     if constexpr (Seed::enabled) {
-      par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) {
+      par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
         const I64 s = s0 + j;
         sdp[j] = seed(j, gvp[j], sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s]);
       });
@@ -397,7 +397,7 @@ class Splayer {
     if (host_min < (I64(1) << 62)) {
       Buffer<I64, B> hj(ctx_, static_cast<std::size_t>(std::max<I64>(k, 1)));
       const std::size_t nh = par::select_indices(ctx_, static_cast<std::size_t>(k), hj.data(),
-                                                 [=] GDEL_HD(I64 j) { return lhp[j + 1] - lhp[j] > host_min; });
+                                                 [=] GDEL_LAMBDA(I64 j) { return lhp[j + 1] - lhp[j] > host_min; });
       if (nh > 0) {
         hj.resize(nh);
         huge = hj.to_host();
@@ -406,7 +406,7 @@ class Splayer {
     HostJobs hjobs;
     if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov, lp, sdp);
     ss_.host_built += static_cast<I64>(huge.size());
-    par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
+    par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, double* work) {
       const I64 s = s0 + j;
       const I64 a = lhp[j], b = lhp[j + 1];
       up[j] = 0;
@@ -669,11 +669,11 @@ class Splayer {
     Buffer<I64, B> slot_star(ctx_, static_cast<std::size_t>(std::max<I64>(slots, 1)));
     I64* ssp = slot_star.data();
     par::fill(ctx_, ssp, slot_star.size(), I64(-1));
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) {
       if (sv.dead(s)) return;  // a dead (redundant) vertex has no tets
       for (std::int32_t i = 0; i < sv.count[s]; ++i) ssp[sv.begin[s] + i] = s;
     });
-    auto candidate = [=] GDEL_HD(I64 q, vid_t* tet) -> bool {
+    auto candidate = [=] GDEL_LAMBDA(I64 q, vid_t* tet) -> bool {
       const I64 s = ssp[q];
       if (s < 0) return false;
       const Tri& tr = sv.tri[q];
@@ -689,28 +689,28 @@ class Splayer {
     std::int8_t* sfp = sgn.data();
     exact += par::two_stage_signs(
         ctx_, slots, sfp,
-        [=] GDEL_HD(I64 q) -> std::int8_t {
+        [=] GDEL_LAMBDA(I64 q) -> std::int8_t {
           vid_t v[4] = {0, 0, 0, 0};
           return candidate(q, v) ? g.volume_sign_fast(v) : std::int8_t(0);
         },
-        [=] GDEL_HD(I64 q, double* work) -> std::int8_t {
+        [=] GDEL_LAMBDA(I64 q, double* work) -> std::int8_t {
           vid_t v[4] = {0, 0, 0, 0};
           return candidate(q, v) ? g.volume_sign_exact(v, work) : std::int8_t(0);
         },
         geom::kPredicateWork);
     std::int32_t* ep = error_.data();
-    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
+    par::parallel_for(ctx_, slots, [=] GDEL_LAMBDA(I64 q) {
       if (sfp[q] < 0) ep[0] = 8;
     });
     throw_if_error("extracting tets");
     num.resize(static_cast<std::size_t>(slots + 1));
     I64* np = num.data();
-    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) {
+    par::parallel_for(ctx_, slots, [=] GDEL_LAMBDA(I64 q) {
       vid_t v[4];
       np[q] = (candidate(q, v) && sfp[q] == 0) ? 1 : 0;
     });
     flat += par::reduce_sum(ctx_, np, static_cast<std::size_t>(slots));
-    par::parallel_for(ctx_, slots, [=] GDEL_HD(I64 q) { np[q] = sfp[q] > 0 ? 1 : 0; });
+    par::parallel_for(ctx_, slots, [=] GDEL_LAMBDA(I64 q) { np[q] = sfp[q] > 0 ? 1 : 0; });
     return par::counts_to_offsets(ctx_, np, static_cast<std::size_t>(slots));
   }
 
@@ -719,7 +719,7 @@ class Splayer {
   void write_star_tets(const Buffer<I64, B>& num, vid_t* tets, std::int32_t* nbr, I64 base) {
     const I64* np = num.data();
     const StarView sv = view();
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) {
       for (std::int32_t i = 0; i < sv.count[s]; ++i) {
         const I64 q = sv.begin[s] + i;
         if (np[q + 1] == np[q]) continue;
@@ -736,7 +736,7 @@ class Splayer {
     if (k == 0) return 0;
     Buffer<I64, B> len(ctx_, static_cast<std::size_t>(k));
     I64* lp = len.data();
-    par::parallel_for(ctx_, k, [=] GDEL_HD(I64 j) { lp[j] = (j + 1 < k ? heads[j + 1] : n) - heads[j]; });
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) { lp[j] = (j + 1 < k ? heads[j + 1] : n) - heads[j]; });
     return par::reduce_max(ctx_, lp, static_cast<std::size_t>(k), I64(0));
   }
 
@@ -766,7 +766,7 @@ class Splayer {
     const flip::Geo g = g_;
     Buffer<I64, B> bad(ctx_, static_cast<std::size_t>(nst_));
     I64* bp = bad.data();
-    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_HD(I64 s, double* work) {
+    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 s, double* work) {
       const Tri* T = sv.tri + sv.begin[s];
       I64 c = 0;
       if (sv.dead(s)) {
@@ -793,13 +793,13 @@ class Splayer {
     Buffer<vid_t, B> miss(ctx_, static_cast<std::size_t>(n));
     vid_t* mp = miss.data();
     Buffer<I64, B> idx(ctx_, static_cast<std::size_t>(n));
-    const std::size_t k = par::select_indices(ctx_, static_cast<std::size_t>(n), idx.data(), [=] GDEL_HD(I64 i) {
+    const std::size_t k = par::select_indices(ctx_, static_cast<std::size_t>(n), idx.data(), [=] GDEL_LAMBDA(I64 i) {
       const vid_t t = key_target(rp[i]);
       return so[t] < 0 && (i == 0 || key_target(rp[i - 1]) != t);
     });
     if (k == 0) return;
     const I64* ip = idx.data();
-    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 i) { mp[i] = key_target(rp[ip[i]]); });
+    par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_LAMBDA(I64 i) { mp[i] = key_target(rp[ip[i]]); });
     miss.resize(k);
     ss_.stars_pulled += static_cast<I64>(k);
     pull_(miss);
@@ -816,7 +816,7 @@ class Splayer {
     const std::int32_t* so = star_of_.data();
     const StarView sv = view();
     Buffer<U64, B> out(ctx_, static_cast<std::size_t>(n));
-    const std::size_t k = par::copy_if(ctx_, rp, out.data(), static_cast<std::size_t>(n), [=] GDEL_HD(U64 key) {
+    const std::size_t k = par::copy_if(ctx_, rp, out.data(), static_cast<std::size_t>(n), [=] GDEL_LAMBDA(U64 key) {
       if (sorted_contains(hp, nh, key)) return false;
       const std::int32_t s = so[key_target(key)];
       if (sv.dead(s)) return false;  // a dead star takes no more points
@@ -832,7 +832,7 @@ class Splayer {
     history_.resize(h + n);
     U64* hp = history_.data() + h;
     const U64* rp = req.data();
-    par::parallel_for(ctx_, static_cast<I64>(n), [=] GDEL_HD(I64 i) { hp[i] = rp[i]; });
+    par::parallel_for(ctx_, static_cast<I64>(n), [=] GDEL_LAMBDA(I64 i) { hp[i] = rp[i]; });
     par::sort_keys(ctx_, history_.data(), h + n);
   }
 
@@ -844,7 +844,7 @@ class Splayer {
     const std::int32_t* so = star_of_.data();
     // per-star request ranges
     Buffer<I64, B> heads(ctx_, static_cast<std::size_t>(n));
-    const std::size_t nh = par::select_indices(ctx_, static_cast<std::size_t>(n), heads.data(), [=] GDEL_HD(I64 i) {
+    const std::size_t nh = par::select_indices(ctx_, static_cast<std::size_t>(n), heads.data(), [=] GDEL_LAMBDA(I64 i) {
       return i == 0 || key_target(rp[i - 1]) != key_target(rp[i]);
     });
     const I64* hp = heads.data();
@@ -852,8 +852,8 @@ class Splayer {
     Buffer<std::int32_t, B> need(ctx_, static_cast<std::size_t>(nst_));
     std::int32_t* np = need.data();
     const std::int32_t* cnt = count_.data();
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) { np[s] = 0; });
-    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) { np[s] = 0; });
+    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_LAMBDA(I64 j) {
       const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
       const std::int32_t s = so[key_target(rp[a])];
       np[s] = 2 * (cnt[s] + 2 * static_cast<std::int32_t>(b - a)) + 4;
@@ -863,7 +863,7 @@ class Splayer {
     // room for gone pairs: every link vertex and every insertion at most once
     Buffer<I64, B> room(ctx_, static_cast<std::size_t>(nh + 1));
     I64* rmp = room.data();
-    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_LAMBDA(I64 j) {
       const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
       const std::int32_t s = so[key_target(rp[a])];
       rmp[j] = cnt[s] / 2 + 3 + 3 * (b - a);
@@ -887,7 +887,7 @@ class Splayer {
       // (nh + 1, not std::max(nh, 1): nvcc 13.0 crashes, "i_copy_expr_tree", when nh, a
       // const local initialised by a call with an extended lambda, binds to a reference)
       Buffer<I64, B> hj(ctx_, nh + 1);
-      std::size_t nhuge = par::select_indices(ctx_, nh, hj.data(), [=] GDEL_HD(I64 j) {
+      std::size_t nhuge = par::select_indices(ctx_, nh, hj.data(), [=] GDEL_LAMBDA(I64 j) {
         return cnt[so[key_target(rp[hp[j]])]] > host_tri_min;
       });
       if (nhuge > 0) {
@@ -895,7 +895,7 @@ class Splayer {
         ijobs = insert_jobs(hj.to_host(), req, heads, static_cast<I64>(nh), room);
       }
     }
-    par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
+    par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, double* work) {
       const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
       const vid_t sv_vert = key_target(rp[a]);
       const std::int32_t s = so[sv_vert];
@@ -933,7 +933,7 @@ class Splayer {
     std::int32_t* ep = error_.data();
     Buffer<I64, B> fresh(ctx_, static_cast<std::size_t>(nst_));
     I64* fp = fresh.data();
-    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_HD(I64 s, double* work) {
+    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 s, double* work) {
       fp[s] = 0;
       if (!sv.dead(s) || sv.cert[5 * s] >= 0) return;
       fp[s] = 1;
@@ -973,11 +973,11 @@ class Splayer {
   Buffer<U64, B> pack_pairs(const U64* raw, const I64* room, const I64* used, I64 items) {
     Buffer<I64, B> off(ctx_, static_cast<std::size_t>(items + 1));
     I64* op = off.data();
-    par::parallel_for(ctx_, items, [=] GDEL_HD(I64 j) { op[j] = used[j]; });
+    par::parallel_for(ctx_, items, [=] GDEL_LAMBDA(I64 j) { op[j] = used[j]; });
     const I64 n = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(items));
     Buffer<U64, B> packed(ctx_, static_cast<std::size_t>(n));
     U64* pk = packed.data();
-    par::parallel_for(ctx_, items, [=] GDEL_HD(I64 j) {
+    par::parallel_for(ctx_, items, [=] GDEL_LAMBDA(I64 j) {
       for (I64 i = 0; i < used[j]; ++i) pk[op[j] + i] = raw[room[j] + i];
     });
     if (n > 0) {
@@ -1000,20 +1000,20 @@ class Splayer {
       Buffer<U64, B> rev(ctx_, static_cast<std::size_t>(n0));
       U64* rv = rev.data();
       const U64* ga = gone_all.data();
-      par::parallel_for(ctx_, n0, [=] GDEL_HD(I64 i) {
+      par::parallel_for(ctx_, n0, [=] GDEL_LAMBDA(I64 i) {
         const vid_t v = key_vertex(ga[i]);
         rv[i] = v == inf ? ~U64(0) : pair_key(v, key_target(ga[i]));
       });
       par::sort_keys(ctx_, rv, static_cast<std::size_t>(n0));
       Buffer<U64, B> revc(ctx_, static_cast<std::size_t>(n0));
       const std::size_t kr = par::copy_if(ctx_, rv, revc.data(), static_cast<std::size_t>(n0),
-                                          [=] GDEL_HD(U64 k) { return k != ~U64(0); });
+                                          [=] GDEL_LAMBDA(U64 k) { return k != ~U64(0); });
       revc.resize(kr);
       if (kr > 0) pull_targets(revc);
       const std::int32_t* so = star_of_.data();
       const StarView sv = view();
       gone.resize(static_cast<std::size_t>(n0));
-      const std::size_t kg = par::copy_if(ctx_, ga, gone.data(), static_cast<std::size_t>(n0), [=] GDEL_HD(U64 k) {
+      const std::size_t kg = par::copy_if(ctx_, ga, gone.data(), static_cast<std::size_t>(n0), [=] GDEL_LAMBDA(U64 k) {
         // a dead star needs no proofs: its certificate reaches every star holding it
         if (sv.dead(so[key_target(k)])) return false;
         const vid_t v = key_vertex(k);
@@ -1035,7 +1035,7 @@ class Splayer {
     std::int32_t* ep = error_.data();
     Buffer<vid_t, B> pf(ctx_, static_cast<std::size_t>(4 * n));
     vid_t* pp = pf.data();
-    par::for_each_with_scratch(ctx_, n, geom::kPredicateWork, [=] GDEL_HD(I64 i, double* work) {
+    par::for_each_with_scratch(ctx_, n, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 i, double* work) {
       const vid_t s = key_target(gp[i]), v = key_vertex(gp[i]);
       const std::int32_t st = so[s];
       vid_t out[4];
@@ -1053,7 +1053,7 @@ class Splayer {
     // proofs of ∞: keep (s -> proof) sorted by s
     Buffer<I64, B> idx(ctx_, static_cast<std::size_t>(n));
     const std::size_t k = par::select_indices(ctx_, static_cast<std::size_t>(n), idx.data(),
-                                              [=] GDEL_HD(I64 i) { return key_vertex(gp[i]) == inf; });
+                                              [=] GDEL_LAMBDA(I64 i) { return key_vertex(gp[i]) == inf; });
     if (k > 0) {
       const std::size_t h = inf_proof_key_.size();
       inf_proof_key_.resize(h + k);
@@ -1061,7 +1061,7 @@ class Splayer {
       U64* kp = inf_proof_key_.data();
       vid_t* ip = inf_proof_.data();
       const I64* xp = idx.data();
-      par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_HD(I64 j) {
+      par::parallel_for(ctx_, static_cast<I64>(k), [=] GDEL_LAMBDA(I64 j) {
         const I64 i = xp[j];
         kp[h + j] = (U64(static_cast<std::uint32_t>(key_target(gp[i]))) << 32) | U64(h + j);
         for (int q = 0; q < 4; ++q) ip[4 * (h + j) + q] = pp[4 * i + q];
@@ -1072,7 +1072,7 @@ class Splayer {
     // drop the ~0 placeholders
     Buffer<U64, B> out(ctx_, next.size());
     const std::size_t m = par::copy_if(ctx_, next.data(), out.data(), next.size(),
-                                       [=] GDEL_HD(U64 key) { return key != ~U64(0); });
+                                       [=] GDEL_LAMBDA(U64 key) { return key != ~U64(0); });
     out.resize(m);
     next = std::move(out);
   }
@@ -1090,7 +1090,7 @@ class Splayer {
     Buffer<I64, B> cnt(ctx_, static_cast<std::size_t>(nst_ + 1));
     I64* cp = cnt.data();
     // number of requests per star
-    auto inf_proof_of = [=] GDEL_HD(vid_t x) -> I64 {  // index into inf_proof_, or -1
+    auto inf_proof_of = [=] GDEL_LAMBDA(vid_t x) -> I64 {  // index into inf_proof_, or -1
       const U64 lo = U64(static_cast<std::uint32_t>(x)) << 32;
       I64 a = 0, b = ni;
       while (a < b) {
@@ -1103,12 +1103,12 @@ class Splayer {
     // a link vertex whose star died: its certificate's points go to this star
     const std::int32_t* so = star_of_.data();
     const bool weighted = g_.w != nullptr;
-    auto dead_vertex = [=] GDEL_HD(vid_t x) -> std::int32_t {  // the dead star of x, or -1
+    auto dead_vertex = [=] GDEL_LAMBDA(vid_t x) -> std::int32_t {  // the dead star of x, or -1
       if (!weighted || x == inf) return -1;
       const std::int32_t st = so[x];
       return (st >= 0 && sv.dead(st)) ? st : -1;
     };
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) {
       const Tri* T = sv.tri + sv.begin[s];
       const std::uint8_t* S = sv.state + sv.begin[s];
       I64 c = 0;
@@ -1125,7 +1125,7 @@ class Splayer {
     const I64 base = static_cast<I64>(next.size());
     next.resize(static_cast<std::size_t>(base + total));
     U64* np = next.data() + base;
-    par::parallel_for(ctx_, nst_, [=] GDEL_HD(I64 s) {
+    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) {
       Tri* T = sv.tri + sv.begin[s];
       std::uint8_t* S = sv.state + sv.begin[s];
       const vid_t me = sv.vert[s];
@@ -1169,7 +1169,7 @@ class Splayer {
     });
     Buffer<U64, B> out(ctx_, next.size());
     const std::size_t m = par::copy_if(ctx_, next.data(), out.data(), next.size(),
-                                       [=] GDEL_HD(U64 key) { return key != ~U64(0); });
+                                       [=] GDEL_LAMBDA(U64 key) { return key != ~U64(0); });
     out.resize(m);
     next = std::move(out);
   }

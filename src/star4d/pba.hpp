@@ -281,7 +281,7 @@ void phase1(par::Context<B>& ctx, int W, int m1, std::int32_t* g, const std::int
   const I64 W2 = I64(W) * W;
   const int bs = band_size(W, m1);
   const int nb = (W + bs - 1) / bs;
-  par::parallel_for(ctx, W2 * nb, [=] GDEL_HD(I64 id) {
+  par::parallel_for(ctx, W2 * nb, [=] GDEL_LAMBDA(I64 id) {
     const I64 col = id % W2;
     const int band = static_cast<int>(id / W2);
     const int a = band * bs;
@@ -320,7 +320,7 @@ void phase1(par::Context<B>& ctx, int W, int m1, std::int32_t* g, const std::int
   peak = std::max(peak, below.bytes() + above.bytes());
   std::int32_t* bp = below.data();
   std::int32_t* ap = above.data();
-  par::parallel_for(ctx, W2 * nb, [=] GDEL_HD(I64 id) {
+  par::parallel_for(ctx, W2 * nb, [=] GDEL_LAMBDA(I64 id) {
     const I64 col = id % W2;
     const int band = static_cast<int>(id / W2);
     std::int32_t lo_site = -1, hi_site = -1;
@@ -342,7 +342,7 @@ void phase1(par::Context<B>& ctx, int W, int m1, std::int32_t* g, const std::int
     bp[id] = lo_site;
     ap[id] = hi_site;
   });
-  par::parallel_for(ctx, W2 * W, [=] GDEL_HD(I64 k) {
+  par::parallel_for(ctx, W2 * W, [=] GDEL_LAMBDA(I64 k) {
     const int z = static_cast<int>(k / W2);
     const I64 col = k % W2;
     const I64 bid = I64(z / bs) * W2 + col;
@@ -383,7 +383,7 @@ void phase23(par::Context<B>& ctx, int W, const PbaBands& bands, int pass, std::
   auto t0 = std::chrono::steady_clock::now();
 
   // 2a: Maurer's stack per band, stored compactly at the band's start.
-  par::parallel_for(ctx, W2 * nb, [=] GDEL_HD(I64 id) {
+  par::parallel_for(ctx, W2 * nb, [=] GDEL_LAMBDA(I64 id) {
     const I64 line = id % W2;
     const int band = static_cast<int>(id / W2);
     const int a = static_cast<int>(line % W);
@@ -418,7 +418,7 @@ void phase23(par::Context<B>& ctx, int W, const PbaBands& bands, int pass, std::
   // 2b: pairwise merges of adjacent band groups.
   for (int gsz = 1; gsz < nb; gsz *= 2) {
     const int npairs = (nb + 2 * gsz - 1) / (2 * gsz);
-    par::parallel_for(ctx, W2 * npairs, [=] GDEL_HD(I64 id) {
+    par::parallel_for(ctx, W2 * npairs, [=] GDEL_LAMBDA(I64 id) {
       const I64 line = id % W2;
       const int pair = static_cast<int>(id / W2);
       const int l0 = pair * 2 * gsz;
@@ -464,7 +464,7 @@ void phase23(par::Context<B>& ctx, int W, const PbaBands& bands, int pass, std::
   t0 = std::chrono::steady_clock::now();
 
   // 3: colour each band of m3 from the proximate list.
-  par::parallel_for(ctx, W2 * nb3, [=] GDEL_HD(I64 id) {
+  par::parallel_for(ctx, W2 * nb3, [=] GDEL_LAMBDA(I64 id) {
     const I64 line = id % W2;
     const int band = static_cast<int>(id / W2);
     const int a = static_cast<int>(line % W);
@@ -526,7 +526,7 @@ void phase23(par::Context<B>& ctx, int W, const PbaBands& bands, int pass, std::
 template <class B>
 void transpose_xy(par::Context<B>& ctx, int W, const std::int32_t* in, std::int32_t* out) {
   const I64 W2 = I64(W) * W;
-  par::parallel_for(ctx, W2 * W, [=] GDEL_HD(I64 k) {
+  par::parallel_for(ctx, W2 * W, [=] GDEL_LAMBDA(I64 k) {
     const I64 y = k % W;
     const I64 x = (k / W) % W;
     const I64 z = k / W2;
@@ -560,7 +560,7 @@ par::Buffer<std::int32_t, B> pba_colour(par::Context<B>& ctx, int W, const std::
   std::int32_t* g = g0.data();
   st.grid_bytes = g0.bytes();
   par::fill(ctx, g, static_cast<std::size_t>(W3), kNoSeed);
-  par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) {
+  par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) {
     const I64 k = (I64(vox[3 * i + 2]) * W + vox[3 * i + 1]) * W + vox[3 * i];
     par::atomic_min(g + k, static_cast<std::int32_t>(i));
   });
@@ -568,7 +568,7 @@ par::Buffer<std::int32_t, B> pba_colour(par::Context<B>& ctx, int W, const std::
   {
     par::Buffer<std::int64_t, B> one(ctx, static_cast<std::size_t>(n > 0 ? n : 1));
     std::int64_t* op = one.data();
-    par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) {
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) {
       const I64 k = (I64(vox[3 * i + 2]) * W + vox[3 * i + 1]) * W + vox[3 * i];
       op[i] = g[k] == static_cast<std::int32_t>(i) ? 1 : 0;
     });
@@ -620,7 +620,7 @@ DigitalVoronoi<B> digital_voronoi(par::Context<B>& ctx, const double* X, std::in
   const double ox = lo[0], oy = lo[1], oz = lo[2], sc = dv.scale;
   dv.voxel.resize_discard(static_cast<std::size_t>(3 * n));
   std::int32_t* vp = dv.voxel.data();
-  par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) {
+  par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) {
     const double o[3] = {ox, oy, oz};
     for (int a = 0; a < 3; ++a) {
       const double f = (X[3 * i + a] - o[a]) * sc;

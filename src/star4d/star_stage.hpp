@@ -93,7 +93,7 @@ class StarStage {
     nc -= first;
     Buffer<U64, B> lk(ctx_, static_cast<std::size_t>(nc + (1 + lr) * m));
     U64* kp = lk.data();
-    par::parallel_for(ctx_, m, [=] GDEL_HD(I64 v) {
+    par::parallel_for(ctx_, m, [=] GDEL_LAMBDA(I64 v) {
       const I64 a = offsets[v], b = offsets[v + 1], base = a - offsets[0];
       for (I64 i = a; i < b; ++i) {
         const vid_t x = cand[i];
@@ -152,7 +152,7 @@ class StarStage {
     const vid_t inf = g_.inf;
     Buffer<I64, B> d(ctx_, static_cast<std::size_t>(std::max<I64>(ns, 1)));
     I64* dp = d.data();
-    par::parallel_for(ctx_, ns, [=] GDEL_HD(I64 s) {
+    par::parallel_for(ctx_, ns, [=] GDEL_LAMBDA(I64 s) {
       I64 c = 0;
       if (!sv.dead(s))
         for (std::int32_t i = 0; i < sv.count[s]; ++i) c += splay::tri_pos(sv.tri[sv.begin[s] + i], inf) >= 0 ? 1 : 0;
@@ -179,7 +179,7 @@ class StarStage {
     std::int32_t* cp = changed.data();
     for (;;) {
       par::fill(ctx_, cp, std::size_t(1), std::int32_t(0));
-      par::parallel_for(ctx_, ns, [=] GDEL_HD(I64 s) {
+      par::parallel_for(ctx_, ns, [=] GDEL_LAMBDA(I64 s) {
         if (sv.dead(s)) return;
         const vid_t me = sv.vert[s];
         for (std::int32_t i = 0; i < sv.count[s]; ++i) {
@@ -194,7 +194,7 @@ class StarStage {
           }
         }
       });
-      par::parallel_for(ctx_, nv, [=] GDEL_HD(I64 v) {
+      par::parallel_for(ctx_, nv, [=] GDEL_LAMBDA(I64 v) {
         vid_t r = par::atomic_load(lp + v);
         while (par::atomic_load(lp + r) != r) r = par::atomic_load(lp + r);
         par::atomic_min(lp + v, r);
@@ -206,7 +206,7 @@ class StarStage {
     // hull vertices in id order (the stars of live hull vertices)
     Buffer<vid_t, B> hv(ctx_, static_cast<std::size_t>(std::max<I64>(ns, 1)));
     Buffer<I64, B> hs(ctx_, static_cast<std::size_t>(std::max<I64>(ns, 1)));
-    I64 nh = static_cast<I64>(par::select_indices(ctx_, static_cast<std::size_t>(ns), hs.data(), [=] GDEL_HD(I64 s) {
+    I64 nh = static_cast<I64>(par::select_indices(ctx_, static_cast<std::size_t>(ns), hs.data(), [=] GDEL_LAMBDA(I64 s) {
       if (sv.dead(s)) return false;
       for (std::int32_t i = 0; i < sv.count[s]; ++i)
         if (splay::tri_pos(sv.tri[sv.begin[s] + i], inf) >= 0) return true;
@@ -214,13 +214,13 @@ class StarStage {
     }));
     vid_t* hp = hv.data();
     const I64* hsp = hs.data();
-    par::parallel_for(ctx_, nh, [=] GDEL_HD(I64 i) { hp[i] = sv.vert[hsp[i]]; });
+    par::parallel_for(ctx_, nh, [=] GDEL_LAMBDA(I64 i) { hp[i] = sv.vert[hsp[i]]; });
     par::sort_keys(ctx_, hp, static_cast<std::size_t>(nh));
     // (stars are in vertex order already for gStar4D; the sort keeps this independent of it)
     const I64 r = reach;
     out.resize(static_cast<std::size_t>(std::max<I64>(2 * r * nh, 1)));
     U64* op = out.data();
-    par::parallel_for(ctx_, nh, [=] GDEL_HD(I64 b) {
+    par::parallel_for(ctx_, nh, [=] GDEL_LAMBDA(I64 b) {
       U64* o = op + 2 * r * b;
       for (I64 j = 0; j < r; ++j) {
         const bool ok = b > 0 && b - 1 - j >= 0 && b + j < nh && lp[hp[b - 1]] != lp[hp[b]] &&
@@ -230,7 +230,7 @@ class StarStage {
       }
     });
     Buffer<U64, B> packed(ctx_, out.size());
-    std::size_t k = par::copy_if(ctx_, op, packed.data(), out.size(), [=] GDEL_HD(U64 key) { return key != ~U64(0); });
+    std::size_t k = par::copy_if(ctx_, op, packed.data(), out.size(), [=] GDEL_LAMBDA(U64 key) { return key != ~U64(0); });
     packed.resize(k);
     out = std::move(packed);
     return nh;

@@ -205,7 +205,7 @@ void keys_to_csr(par::Context<B>& ctx, const U64* keys, I64 m, I64 n, par::Buffe
   ids.resize_discard(static_cast<std::size_t>(m));
   I64* op = offsets.data();
   vid_t* ip = ids.data();
-  par::parallel_for(ctx, m, [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, m, [=] GDEL_LAMBDA(I64 j) {
     const I64 s = key_hi(keys[j]);
     const I64 sp = j == 0 ? -1 : I64(key_hi(keys[j - 1]));
     for (I64 t = sp + 1; t <= s; ++t) op[t] = j;
@@ -217,7 +217,7 @@ void keys_to_csr(par::Context<B>& ctx, const U64* keys, I64 m, I64 n, par::Buffe
     par::detail::Memory<B>::to_host(ctx, &k, keys + (m - 1), sizeof(U64));
     last = key_hi(k);
   }
-  par::parallel_for(ctx, n + 1 - (last + 1), [=] GDEL_HD(I64 j) { op[last + 1 + j] = m; });
+  par::parallel_for(ctx, n + 1 - (last + 1), [=] GDEL_LAMBDA(I64 j) { op[last + 1 + j] = m; });
 }
 
 inline int key_bits(I64 n) {
@@ -250,7 +250,7 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
   auto t0 = std::chrono::steady_clock::now();
   par::Buffer<I64, B> miss(ctx, static_cast<std::size_t>(n));
   I64* mp = miss.data();
-  const I64 nmiss = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(n), mp, [=] GDEL_HD(I64 i) {
+  const I64 nmiss = static_cast<I64>(par::select_indices(ctx, static_cast<std::size_t>(n), mp, [=] GDEL_LAMBDA(I64 i) {
     const I64 k = (I64(vox[3 * i + 2]) * W + vox[3 * i + 1]) * W + vox[3 * i];
     return g[k] != static_cast<std::int32_t>(i);
   }));
@@ -262,7 +262,7 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
   const I64 R = W >= 2 ? I64(W - 1) * (W - 1) : 0;
   par::Buffer<I64, B> rows(ctx, static_cast<std::size_t>(R + 1));
   I64* rp = rows.data();
-  par::parallel_for(ctx, R, [=] GDEL_HD(I64 r) {
+  par::parallel_for(ctx, R, [=] GDEL_LAMBDA(I64 r) {
     rp[r] = scan_row(g, W, r, nullptr);
   });
   const I64 ngrid = par::counts_to_offsets(ctx, rp, static_cast<std::size_t>(R));
@@ -270,10 +270,10 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
   st.raw_pairs = ngrid + nmiss;
   par::Buffer<U64, B> keys(ctx, static_cast<std::size_t>(ngrid + nmiss));
   U64* kp = keys.data();
-  par::parallel_for(ctx, R, [=] GDEL_HD(I64 r) {
+  par::parallel_for(ctx, R, [=] GDEL_LAMBDA(I64 r) {
     scan_row(g, W, r, kp + rp[r]);
   });
-  par::parallel_for(ctx, nmiss, [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, nmiss, [=] GDEL_LAMBDA(I64 j) {
     const I64 i = mp[j];
     const I64 k = (I64(vox[3 * i + 2]) * W + vox[3 * i + 1]) * W + vox[3 * i];
     const std::int32_t o = g[k];
@@ -293,7 +293,7 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
   st.unique_pairs = nu;
   par::Buffer<U64, B> dir(ctx, static_cast<std::size_t>(2 * nu));
   U64* dp = dir.data();
-  par::parallel_for(ctx, nu, [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, nu, [=] GDEL_LAMBDA(I64 j) {
     const U64 k = kp[j];
     dp[2 * j] = k;
     dp[2 * j + 1] = pack(key_lo(k), key_hi(k));
@@ -315,7 +315,7 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
   I64* np = need.data();
   {
     const I64* op = out.offsets.data();
-    par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) {
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) {
       const I64 d = op[i + 1] - op[i];
       np[i] = d < K ? K - d : 0;
     });
@@ -323,7 +323,7 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
   {
     par::Buffer<I64, B> flag(ctx, static_cast<std::size_t>(n));
     I64* fp = flag.data();
-    par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) { fp[i] = np[i] > 0 ? 1 : 0; });
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) { fp[i] = np[i] > 0 ? 1 : 0; });
     st.pumped_points = par::reduce_sum(ctx, fp, static_cast<std::size_t>(n));
   }
   const I64 npump = par::counts_to_offsets(ctx, np, static_cast<std::size_t>(n));
@@ -333,7 +333,7 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
     vid_t* gp = got.data();
     const I64* op = out.offsets.data();
     const vid_t* ip = out.ids.data();
-    par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) {
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) {
       const I64 want = np[i + 1] - np[i];
       if (want == 0) return;
       vid_t* q = gp + np[i];
@@ -394,7 +394,7 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
     // directions are new: sort + unique them alone and merge them into the lists.
     par::Buffer<U64, B> add(ctx, static_cast<std::size_t>(2 * npump));
     U64* ap = add.data();
-    par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) {
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) {
       for (I64 t = np[i]; t < np[i + 1]; ++t) {
         const std::int32_t a = static_cast<std::int32_t>(i), x = gp[t];
         ap[2 * t] = pack(a, x);
@@ -415,8 +415,8 @@ WorkingSets<B> working_sets(par::Context<B>& ctx, const DigitalVoronoi<B>& dv, c
     vid_t* nip = nids.data();
     const I64* aop = aoff.data();
     const vid_t* aip = aids.data();
-    par::parallel_for(ctx, n + 1, [=] GDEL_HD(I64 i) { nop[i] = op[i] + aop[i]; });
-    par::parallel_for(ctx, n, [=] GDEL_HD(I64 i) {  // merge two sorted disjoint lists
+    par::parallel_for(ctx, n + 1, [=] GDEL_LAMBDA(I64 i) { nop[i] = op[i] + aop[i]; });
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 i) {  // merge two sorted disjoint lists
       I64 u = op[i], ue = op[i + 1], v = aop[i], ve = aop[i + 1], w = op[i] + aop[i];
       while (u < ue && v < ve) nip[w++] = ip[u] < aip[v] ? ip[u++] : aip[v++];
       while (u < ue) nip[w++] = ip[u++];

@@ -85,12 +85,12 @@ std::vector<Chunk> plan_chunks(Context<B>& ctx, std::int64_t n, std::int64_t ite
   Buffer<I64, B> off(ctx, static_cast<std::size_t>(n + 1));
   I64* o = off.data();
   par::fill(ctx, o, static_cast<std::size_t>(n + 1), I64(0));
-  par::parallel_for(ctx, items, [=] GDEL_HD(I64 i) { par::atomic_add(o + bucket_of(i), I64(1)); });
+  par::parallel_for(ctx, items, [=] GDEL_LAMBDA(I64 i) { par::atomic_add(o + bucket_of(i), I64(1)); });
   par::counts_to_offsets(ctx, o, static_cast<std::size_t>(n));  // o[v] = items with bucket < v
   const I64 k = (items + cap - 1) / cap;
   Buffer<I64, B> cut(ctx, static_cast<std::size_t>(2 * (k + 1)));
   I64* c = cut.data();
-  par::parallel_for(ctx, k + 1, [=] GDEL_HD(I64 j) {
+  par::parallel_for(ctx, k + 1, [=] GDEL_LAMBDA(I64 j) {
     I64 lo = 0, hi = n;  // smallest v with o[v] >= j * cap (n for the last cut)
     if (j == k) lo = n;
     while (lo < hi) {
@@ -132,7 +132,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
   const int vbits = bit_width_of(n);  // vertex ids < n fit in vbits bits
 
   // --- 1. vertex ids in range and distinct within each tet -----------------------
-  r.bad_index = par::count_indices(ctx, static_cast<std::size_t>(m), [=] GDEL_HD(I64 t) {
+  r.bad_index = par::count_indices(ctx, static_cast<std::size_t>(m), [=] GDEL_LAMBDA(I64 t) {
     const vid_t* v = tet + 4 * t;
     bool bad = false;
     for (int i = 0; i < 4; ++i) {
@@ -149,17 +149,17 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
     std::int8_t* sg = sgn.data();
     r.exact_evaluations += par::two_stage_signs(
         ctx, m, sg,
-        [=] GDEL_HD(I64 t) -> std::int8_t {
+        [=] GDEL_LAMBDA(I64 t) -> std::int8_t {
           const vid_t* v = tet + 4 * t;
           return static_cast<std::int8_t>(geom::orient3d_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3])));
         },
-        [=] GDEL_HD(I64 t, double* work) -> std::int8_t {
+        [=] GDEL_LAMBDA(I64 t, double* work) -> std::int8_t {
           const vid_t* v = tet + 4 * t;
           return static_cast<std::int8_t>(geom::orient3d_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), work));
         },
         geom::kPredicateWork);
-    r.inverted_tets = par::count_indices(ctx, static_cast<std::size_t>(m), [=] GDEL_HD(I64 t) { return sg[t] < 0; });
-    r.degenerate_tets = par::count_indices(ctx, static_cast<std::size_t>(m), [=] GDEL_HD(I64 t) { return sg[t] == 0; });
+    r.inverted_tets = par::count_indices(ctx, static_cast<std::size_t>(m), [=] GDEL_LAMBDA(I64 t) { return sg[t] < 0; });
+    r.degenerate_tets = par::count_indices(ctx, static_cast<std::size_t>(m), [=] GDEL_LAMBDA(I64 t) { return sg[t] == 0; });
   }
 
   // --- 3. facets, chunk by chunk: sort the (t,i) of a chunk by sorted vertex triple;
@@ -176,7 +176,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
     // sign of the apex of the second facet of each pair against the first's tet
     Buffer<std::int8_t, B> s(ctx, static_cast<std::size_t>(std::max<I64>(ni, 1)));
     std::int8_t* sp = s.data();
-    auto args = [=] GDEL_HD(I64 j, vid_t* v) {
+    auto args = [=] GDEL_LAMBDA(I64 j, vid_t* v) {
       const I64 f = fp[pos[j]], o2 = fp[pos[j] + 1];
       const vid_t* t = tet + 4 * (f >> 2);
       for (int k = 0; k < 4; ++k) v[k] = t[k];
@@ -184,7 +184,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
     };
     r.exact_evaluations += par::two_stage_signs(
         ctx, ni, sp,
-        [=] GDEL_HD(I64 j) -> std::int8_t {
+        [=] GDEL_LAMBDA(I64 j) -> std::int8_t {
           vid_t v[5];
           args(j, v);
           if (g.w)
@@ -194,7 +194,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
           return static_cast<std::int8_t>(
               geom::insphere_filter(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), g.p(v[4])));
         },
-        [=] GDEL_HD(I64 j, double* work) -> std::int8_t {
+        [=] GDEL_LAMBDA(I64 j, double* work) -> std::int8_t {
           vid_t v[5];
           args(j, v);
           if (g.w)
@@ -205,26 +205,26 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
               geom::insphere_exact(g.p(v[0]), g.p(v[1]), g.p(v[2]), g.p(v[3]), g.p(v[4]), work));
         },
         geom::kPredicateWork);
-    r.non_delaunay_facets += par::count_indices(ctx, static_cast<std::size_t>(ni), [=] GDEL_HD(I64 j) { return sp[j] > 0; });
-    r.cospherical_facets += par::count_indices(ctx, static_cast<std::size_t>(ni), [=] GDEL_HD(I64 j) { return sp[j] == 0; });
+    r.non_delaunay_facets += par::count_indices(ctx, static_cast<std::size_t>(ni), [=] GDEL_LAMBDA(I64 j) { return sp[j] > 0; });
+    r.cospherical_facets += par::count_indices(ctx, static_cast<std::size_t>(ni), [=] GDEL_LAMBDA(I64 j) { return sp[j] == 0; });
   };
   const std::vector<Chunk> facet_chunks =
-      plan_chunks(ctx, n, nf, cap, [=] GDEL_HD(I64 f) -> I64 { return face_key(tet, f).a; });
+      plan_chunks(ctx, n, nf, cap, [=] GDEL_LAMBDA(I64 f) -> I64 { return face_key(tet, f).a; });
   for (const Chunk ch : facet_chunks) {
     const I64 F = ch.items;
     const vid_t lo = ch.lo, hi = ch.hi;
     Buffer<I64, B> fid(ctx, static_cast<std::size_t>(F));
     I64* fp = fid.data();
-    par::select_indices(ctx, static_cast<std::size_t>(nf), fp, [=] GDEL_HD(I64 f) {
+    par::select_indices(ctx, static_cast<std::size_t>(nf), fp, [=] GDEL_LAMBDA(I64 f) {
       const vid_t a = face_key(tet, f).a;
       return a >= lo && a < hi;
     });
     {
       Buffer<U64, B> key(ctx, static_cast<std::size_t>(F));
       U64* kp = key.data();
-      par::parallel_for(ctx, F, [=] GDEL_HD(I64 k) { kp[k] = static_cast<std::uint32_t>(face_key(tet, fp[k]).c); });
+      par::parallel_for(ctx, F, [=] GDEL_LAMBDA(I64 k) { kp[k] = static_cast<std::uint32_t>(face_key(tet, fp[k]).c); });
       par::sort_pairs(ctx, kp, fp, static_cast<std::size_t>(F), vbits);
-      par::parallel_for(ctx, F, [=] GDEL_HD(I64 k) {
+      par::parallel_for(ctx, F, [=] GDEL_LAMBDA(I64 k) {
         const FaceKey q = face_key(tet, fp[k]);
         kp[k] = chunk_pair_key(q.a, q.b, lo, vbits);
       });
@@ -233,7 +233,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
     // per sorted position, at run starts: 1 hull, 2 interior, 3 same side, 4 overshared
     Buffer<std::int8_t, B> kind(ctx, static_cast<std::size_t>(F));
     std::int8_t* kd = kind.data();
-    par::parallel_for(ctx, F, [=] GDEL_HD(I64 k) {
+    par::parallel_for(ctx, F, [=] GDEL_LAMBDA(I64 k) {
       const FaceKey q = face_key(tet, fp[k]);
       kd[k] = 0;
       if (k > 0 && face_key(tet, fp[k - 1]) == q) return;  // not a run start
@@ -256,7 +256,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       }
     });
     auto count_kind = [&](std::int8_t which) {
-      return par::count_indices(ctx, static_cast<std::size_t>(F), [=] GDEL_HD(I64 k) { return kd[k] == which; });
+      return par::count_indices(ctx, static_cast<std::size_t>(F), [=] GDEL_LAMBDA(I64 k) { return kd[k] == which; });
     };
     const I64 h = count_kind(1), interior = count_kind(2), same = count_kind(3), over = count_kind(4);
     r.hull_facets += h;
@@ -268,8 +268,8 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       I64* pp = part.data();
       Buffer<I64, B> pos(ctx, static_cast<std::size_t>(h));
       I64* ps = pos.data();
-      par::select_indices(ctx, static_cast<std::size_t>(F), ps, [=] GDEL_HD(I64 k) { return kd[k] == 1; });
-      par::parallel_for(ctx, h, [=] GDEL_HD(I64 j) { pp[j] = fp[ps[j]]; });
+      par::select_indices(ctx, static_cast<std::size_t>(F), ps, [=] GDEL_LAMBDA(I64 k) { return kd[k] == 1; });
+      par::parallel_for(ctx, h, [=] GDEL_LAMBDA(I64 j) { pp[j] = fp[ps[j]]; });
       hull_parts.push_back(std::move(part));
     }
     // --- 7. local Delaunay / regular property of the chunk's two-tet facets ------
@@ -277,7 +277,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       Buffer<I64, B> pos(ctx, static_cast<std::size_t>(interior + same));
       I64* ps = pos.data();
       par::select_indices(ctx, static_cast<std::size_t>(F), ps,
-                          [=] GDEL_HD(I64 k) { return kd[k] == 2 || kd[k] == 3; });
+                          [=] GDEL_LAMBDA(I64 k) { return kd[k] == 2 || kd[k] == 3; });
       local_test(interior + same, fp, ps);
     }
   }
@@ -298,27 +298,27 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       }
       hull_parts.clear();
     }
-    auto hull_vertex = [=] GDEL_HD(I64 hidx, int j) -> vid_t {
+    auto hull_vertex = [=] GDEL_LAMBDA(I64 hidx, int j) -> vid_t {
       const I64 f = hp[hidx];
       return tet[4 * (f >> 2) + face_vertex(static_cast<int>(f & 3), j)];
     };
-    auto edge_lo = [=] GDEL_HD(I64 e) -> vid_t {
+    auto edge_lo = [=] GDEL_LAMBDA(I64 e) -> vid_t {
       const vid_t u = hull_vertex(e / 3, static_cast<int>(e % 3)), v = hull_vertex(e / 3, static_cast<int>((e + 1) % 3));
       return u < v ? u : v;
     };
     const I64 ne = 3 * h;
-    for (const Chunk ch : plan_chunks(ctx, n, ne, cap, [=] GDEL_HD(I64 e) -> I64 { return edge_lo(e); })) {
+    for (const Chunk ch : plan_chunks(ctx, n, ne, cap, [=] GDEL_LAMBDA(I64 e) -> I64 { return edge_lo(e); })) {
       const I64 E = ch.items;
       const vid_t lo = ch.lo, hi = ch.hi;
       Buffer<I64, B> ev(ctx, static_cast<std::size_t>(E));
       I64* evp = ev.data();
-      par::select_indices(ctx, static_cast<std::size_t>(ne), evp, [=] GDEL_HD(I64 e) {
+      par::select_indices(ctx, static_cast<std::size_t>(ne), evp, [=] GDEL_LAMBDA(I64 e) {
         const vid_t a = edge_lo(e);
         return a >= lo && a < hi;
       });
       Buffer<U64, B> ek(ctx, static_cast<std::size_t>(E));
       U64* ekp = ek.data();
-      par::parallel_for(ctx, E, [=] GDEL_HD(I64 k) {
+      par::parallel_for(ctx, E, [=] GDEL_LAMBDA(I64 k) {
         const I64 e = evp[k];
         const vid_t u = hull_vertex(e / 3, static_cast<int>(e % 3)), v = hull_vertex(e / 3, static_cast<int>((e + 1) % 3));
         const vid_t a = u < v ? u : v, b = u < v ? v : u;
@@ -328,7 +328,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       // Per run start: exactly 2 with opposite directions (2), else open (1).
       Buffer<std::int8_t, B> kind(ctx, static_cast<std::size_t>(E));
       std::int8_t* kd = kind.data();
-      par::parallel_for(ctx, E, [=] GDEL_HD(I64 k) {
+      par::parallel_for(ctx, E, [=] GDEL_LAMBDA(I64 k) {
         kd[k] = 0;
         if (k > 0 && ekp[k - 1] == ekp[k]) return;
         I64 len = 1;
@@ -341,16 +341,16 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
         const vid_t u1 = hull_vertex(e1 / 3, static_cast<int>(e1 % 3)), u2 = hull_vertex(e2 / 3, static_cast<int>(e2 % 3));
         kd[k] = u1 == u2 ? 1 : 2;  // same direction: inconsistent orientation
       });
-      r.hull_open_edges += par::count_indices(ctx, static_cast<std::size_t>(E), [=] GDEL_HD(I64 k) { return kd[k] == 1; });
+      r.hull_open_edges += par::count_indices(ctx, static_cast<std::size_t>(E), [=] GDEL_LAMBDA(I64 k) { return kd[k] == 1; });
       // convexity: orient3d(facet of e1, apex of facet of e2) must be >= 0
-      const I64 np = par::count_indices(ctx, static_cast<std::size_t>(E), [=] GDEL_HD(I64 k) { return kd[k] == 2; });
+      const I64 np = par::count_indices(ctx, static_cast<std::size_t>(E), [=] GDEL_LAMBDA(I64 k) { return kd[k] == 2; });
       if (!np) continue;
       Buffer<I64, B> plist(ctx, static_cast<std::size_t>(np));
       I64* pl = plist.data();
-      par::select_indices(ctx, static_cast<std::size_t>(E), pl, [=] GDEL_HD(I64 k) { return kd[k] == 2; });
+      par::select_indices(ctx, static_cast<std::size_t>(E), pl, [=] GDEL_LAMBDA(I64 k) { return kd[k] == 2; });
       Buffer<std::int8_t, B> cs(ctx, static_cast<std::size_t>(np));
       std::int8_t* csp = cs.data();
-      auto hull_args = [=] GDEL_HD(I64 j, const double** a) {
+      auto hull_args = [=] GDEL_LAMBDA(I64 j, const double** a) {
         const I64 k = pl[j];
         const I64 e1 = evp[k], e2 = evp[k + 1];
         const I64 h1 = e1 / 3, h2 = e2 / 3;
@@ -363,18 +363,18 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       };
       r.exact_evaluations += par::two_stage_signs(
           ctx, np, csp,
-          [=] GDEL_HD(I64 j) -> std::int8_t {
+          [=] GDEL_LAMBDA(I64 j) -> std::int8_t {
             const double* a[4];
             hull_args(j, a);
             return static_cast<std::int8_t>(geom::orient3d_filter(a[0], a[1], a[2], a[3]));
           },
-          [=] GDEL_HD(I64 j, double* work) -> std::int8_t {
+          [=] GDEL_LAMBDA(I64 j, double* work) -> std::int8_t {
             const double* a[4];
             hull_args(j, a);
             return static_cast<std::int8_t>(geom::orient3d_exact(a[0], a[1], a[2], a[3], work));
           },
           geom::kPredicateWork);
-      r.hull_reflex_edges += par::count_indices(ctx, static_cast<std::size_t>(np), [=] GDEL_HD(I64 j) { return csp[j] < 0; });
+      r.hull_reflex_edges += par::count_indices(ctx, static_cast<std::size_t>(np), [=] GDEL_LAMBDA(I64 j) { return csp[j] < 0; });
     }
   }
 
@@ -382,10 +382,10 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
   Buffer<std::int8_t, B> used(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));
   std::int8_t* up = used.data();
   used.memset(0);
-  par::parallel_for(ctx, 4 * m, [=] GDEL_HD(I64 k) { up[tet[k]] = 1; });  // benign identical writes
-  r.vertices_used = par::count_indices(ctx, static_cast<std::size_t>(n), [=] GDEL_HD(I64 v) { return up[v] != 0; });
+  par::parallel_for(ctx, 4 * m, [=] GDEL_LAMBDA(I64 k) { up[tet[k]] = 1; });  // benign identical writes
+  r.vertices_used = par::count_indices(ctx, static_cast<std::size_t>(n), [=] GDEL_LAMBDA(I64 v) { return up[v] != 0; });
   {
-    auto edge_of = [=] GDEL_HD(I64 k, vid_t& a, vid_t& b) {
+    auto edge_of = [=] GDEL_LAMBDA(I64 k, vid_t& a, vid_t& b) {
       const vid_t* t = tet + 4 * (k / 6);
       const int e = static_cast<int>(k % 6);
       const vid_t u = t[edge_vertex(e, 0)], v = t[edge_vertex(e, 1)];
@@ -393,7 +393,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       b = u < v ? v : u;
     };
     const I64 ne = 6 * m;
-    for (const Chunk ch : plan_chunks(ctx, n, ne, cap, [=] GDEL_HD(I64 k) -> I64 {
+    for (const Chunk ch : plan_chunks(ctx, n, ne, cap, [=] GDEL_LAMBDA(I64 k) -> I64 {
            vid_t a, b;
            edge_of(k, a, b);
            return a;
@@ -405,12 +405,12 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       {
         Buffer<I64, B> ids(ctx, static_cast<std::size_t>(E));
         I64* ip = ids.data();
-        par::select_indices(ctx, static_cast<std::size_t>(ne), ip, [=] GDEL_HD(I64 k) {
+        par::select_indices(ctx, static_cast<std::size_t>(ne), ip, [=] GDEL_LAMBDA(I64 k) {
           vid_t a, b;
           edge_of(k, a, b);
           return a >= lo && a < hi;
         });
-        par::parallel_for(ctx, E, [=] GDEL_HD(I64 j) {
+        par::parallel_for(ctx, E, [=] GDEL_LAMBDA(I64 j) {
           vid_t a, b;
           edge_of(ip[j], a, b);
           ekp[j] = chunk_pair_key(a, b, lo, vbits);
@@ -418,7 +418,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       }
       par::sort_keys(ctx, ekp, static_cast<std::size_t>(E), ch.key_bits(vbits));
       r.edges += par::count_indices(ctx, static_cast<std::size_t>(E),
-                                    [=] GDEL_HD(I64 k) { return k == 0 || ekp[k] != ekp[k - 1]; });
+                                    [=] GDEL_LAMBDA(I64 k) { return k == 0 || ekp[k] != ekp[k - 1]; });
     }
   }
   r.euler = r.vertices_used - r.edges + r.facets - r.tets;
@@ -430,12 +430,12 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
     I64* o = ord.data();
     const double* X = g.xyz;
     sort::lexicographic_order(ctx, X, n, o);
-    auto same = [=] GDEL_HD(I64 a, I64 b) { return sort::same_point(X, a, b); };
+    auto same = [=] GDEL_LAMBDA(I64 a, I64 b) { return sort::same_point(X, a, b); };
     // per sorted position, at group starts: bit 0 start, bit 1 no member used,
     // bit 2 more than one member used
     Buffer<std::int8_t, B> code(ctx, static_cast<std::size_t>(std::max<I64>(n, 1)));
     std::int8_t* cd = code.data();
-    par::parallel_for(ctx, n, [=] GDEL_HD(I64 k) {
+    par::parallel_for(ctx, n, [=] GDEL_LAMBDA(I64 k) {
       cd[k] = 0;
       if (k > 0 && same(o[k - 1], o[k])) return;
       I64 u = 0;
@@ -443,7 +443,7 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       cd[k] = static_cast<std::int8_t>(1 | (u == 0 ? 2 : 0) | (u > 1 ? 4 : 0));
     });
     auto count_bit = [&](int bit) {
-      return par::count_indices(ctx, static_cast<std::size_t>(n), [=] GDEL_HD(I64 k) { return (cd[k] & bit) != 0; });
+      return par::count_indices(ctx, static_cast<std::size_t>(n), [=] GDEL_LAMBDA(I64 k) { return (cd[k] & bit) != 0; });
     };
     r.distinct_points = count_bit(1);
     const I64 unused = count_bit(2);
@@ -458,12 +458,12 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
       I64* ulp = ul.data();
       Buffer<I64, B> pos(ctx, static_cast<std::size_t>(unused));
       I64* pp = pos.data();
-      par::select_indices(ctx, static_cast<std::size_t>(n), pp, [=] GDEL_HD(I64 k) { return (cd[k] & 2) != 0; });
-      par::parallel_for(ctx, unused, [=] GDEL_HD(I64 j) { ulp[j] = o[pp[j]]; });
+      par::select_indices(ctx, static_cast<std::size_t>(n), pp, [=] GDEL_LAMBDA(I64 k) { return (cd[k] & 2) != 0; });
+      par::parallel_for(ctx, unused, [=] GDEL_LAMBDA(I64 j) { ulp[j] = o[pp[j]]; });
       Buffer<std::int8_t, B> res(ctx, static_cast<std::size_t>(unused));
       std::int8_t* rs = res.data();
       const I64 max_steps = 4 * m + 16;
-      par::for_each_with_scratch(ctx, unused, geom::kPredicateWork, [=] GDEL_HD(I64 j, double* work) {
+      par::for_each_with_scratch(ctx, unused, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, double* work) {
         const vid_t q = static_cast<vid_t>(ulp[j]);
         const double* pq = g.p(q);
         I64 t = (static_cast<I64>(q) * 2654435761LL) % m;  // arbitrary start
@@ -496,8 +496,8 @@ VerifyReport run(Context<B>& ctx, const double* host_xyz, std::int64_t n, const 
         }
         rs[j] = 2;  // walk did not terminate
       });
-      r.unused_points = par::count_indices(ctx, static_cast<std::size_t>(unused), [=] GDEL_HD(I64 j) { return rs[j] == 1; });
-      r.locate_failures = par::count_indices(ctx, static_cast<std::size_t>(unused), [=] GDEL_HD(I64 j) { return rs[j] == 2; });
+      r.unused_points = par::count_indices(ctx, static_cast<std::size_t>(unused), [=] GDEL_LAMBDA(I64 j) { return rs[j] == 1; });
+      r.locate_failures = par::count_indices(ctx, static_cast<std::size_t>(unused), [=] GDEL_LAMBDA(I64 j) { return rs[j] == 2; });
       r.redundant_points = unused - r.unused_points - r.locate_failures;
     }
   }

@@ -19,11 +19,11 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   // claim two slots and glue them: t0 = (0,1,2,3), t1 = (1,0,2,4) share face (0,1,2)
   par::Buffer<tid_t, B> got(ctx, 2);
   tid_t* gp = got.data();
-  par::parallel_for(ctx, 2, [=] GDEL_HD(std::int64_t k) { gp[k] = src.slot(k); });
+  par::parallel_for(ctx, 2, [=] GDEL_LAMBDA(std::int64_t k) { gp[k] = src.slot(k); });
   auto ids = got.to_host();
   EXPECT_NE(ids[0], ids[1]);
   EXPECT_EQ(m.size(), 2);
-  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) {
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) {
     tid_t a = gp[0] < gp[1] ? gp[0] : gp[1], b = gp[0] < gp[1] ? gp[1] : gp[0];
     v.tet[a] = Tet{{0, 1, 2, 3}};
     v.tet[b] = Tet{{1, 0, 2, 4}};
@@ -44,13 +44,13 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   EXPECT_EQ(ff[4 * lo + 2], kSpecial | kSphereFail);
 
   // Break symmetry: detected.
-  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { v.set_opp(4 * 0 + 3, pack_facet(1, 2)); });
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.set_opp(4 * 0 + 3, pack_facet(1, 2)); });
   EXPECT_FALSE(check_invariants(m, 5).ok());
-  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { v.link(0, 3, 1, 3); });
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.link(0, 3, 1, 3); });
   EXPECT_TRUE(check_invariants(m, 5).ok());
 
   // Release the first, claim three (one reused + two new), then compact.
-  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) { v.set_opp(4 * 1 + 3, -1); });
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.set_opp(4 * 1 + 3, -1); });
   par::Buffer<tid_t, B> rel(ctx, 1);
   rel.memset(0);  // slot 0
   m.release(rel.data(), 1);
@@ -59,10 +59,10 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   v = m.view();
   par::Buffer<tid_t, B> got3(ctx, 3);
   tid_t* g3 = got3.data();
-  par::parallel_for(ctx, 3, [=] GDEL_HD(std::int64_t k) { g3[k] = src3.slot(k); });
+  par::parallel_for(ctx, 3, [=] GDEL_LAMBDA(std::int64_t k) { g3[k] = src3.slot(k); });
   EXPECT_EQ(got3.to_host(), (std::vector<tid_t>{0, 2, 3}));  // deterministic order
   // Mark slot 0 and 3 alive as isolated tets, 2 stays dead.
-  par::parallel_for(ctx, 1, [=] GDEL_HD(std::int64_t) {
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) {
     v.tet[0] = Tet{{5, 6, 7, 8}};
     v.tet[3] = Tet{{9, 10, 11, kInfinite}};
     for (int i = 0; i < 4; ++i) {
@@ -75,7 +75,7 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   });
   // reorder by a key (largest first vertex first): slots follow the key, links follow the slots
   {
-    auto rmk = m.reorder([] GDEL_HD(const Tet& t) { return std::uint64_t(1000 - t.v[0]); }).to_host();
+    auto rmk = m.reorder([] GDEL_LAMBDA(const Tet& t) { return std::uint64_t(1000 - t.v[0]); }).to_host();
     EXPECT_EQ(m.size(), 3);
     EXPECT_EQ(rmk[2], -1);  // dead slot dropped
     auto tv = m.tets().to_host();
@@ -86,7 +86,7 @@ void tet_mesh_cases(par::Context<B>& ctx) {
     EXPECT_EQ(op[4 * 0 + 3], pack_facet(2, 3));  // old 3 <-> old 1 glued through face 3
     EXPECT_EQ(op[4 * 2 + 3], pack_facet(0, 3));
     // and back to slot order for the compaction checks below
-    m.reorder([] GDEL_HD(const Tet& t) { return std::uint64_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); });
+    m.reorder([] GDEL_LAMBDA(const Tet& t) { return std::uint64_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); });
   }
   auto remap = m.compact().to_host();
   EXPECT_EQ(m.size(), 3);

@@ -65,7 +65,7 @@ void parallel_layer_cases(par::Context<B>& ctx) {
     // indices selection
     const std::int64_t* ap = a.data();
     Buffer<std::int32_t, B> idx(ctx, n);
-    std::size_t k = select_indices(ctx, n, idx.data(), [=] GDEL_HD(std::int32_t i) { return (ap[i] % 3) == 0; });
+    std::size_t k = select_indices(ctx, n, idx.data(), [=] GDEL_LAMBDA(std::int32_t i) { return (ap[i] % 3) == 0; });
     std::vector<std::int32_t> ridx;
     for (std::size_t i = 0; i < n; ++i)
       if (h[i] % 3 == 0) ridx.push_back(static_cast<std::int32_t>(i));
@@ -74,9 +74,9 @@ void parallel_layer_cases(par::Context<B>& ctx) {
     ih.resize(k);
     EXPECT_EQ(ih, ridx);
     // counting the same selection (to size an output exactly)
-    EXPECT_EQ(count_indices(ctx, n, [=] GDEL_HD(std::int64_t i) { return (ap[i] % 3) == 0; }),
+    EXPECT_EQ(count_indices(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { return (ap[i] % 3) == 0; }),
               static_cast<std::int64_t>(ridx.size()));
-    EXPECT_EQ(count_indices(ctx, 0, [=] GDEL_HD(std::int64_t i) { return ap[i] >= 0; }), 0);
+    EXPECT_EQ(count_indices(ctx, 0, [=] GDEL_LAMBDA(std::int64_t i) { return ap[i] >= 0; }), 0);
 
     // sort pairs is stable and sort keys sorts
     std::vector<std::uint64_t> keys(n);
@@ -112,7 +112,7 @@ void parallel_layer_cases(par::Context<B>& ctx) {
     std::int64_t* mp = mins.data();
     const std::uint64_t* kp = kb.data();
     (void)kp;
-    parallel_for(ctx, static_cast<std::int64_t>(n), [=] GDEL_HD(std::int64_t i) {
+    parallel_for(ctx, static_cast<std::int64_t>(n), [=] GDEL_LAMBDA(std::int64_t i) {
       int bucket = static_cast<int>(ap[i] % 64);
       atomic_add(hp + bucket, 1);
       atomic_min(mp + bucket, ap[i]);
