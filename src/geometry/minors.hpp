@@ -12,6 +12,9 @@
 //   k = 1..3 with h      : the lifted orient1/2/3 minors of the SoS tables
 //   k = 1, 2 without h   : coordinate differences and orient2d on a coordinate pair
 //
+// Integer stage (exact, before the expansions): when every entry is a small integer, the
+// determinant in 128-bit integers (det_ones_int below, with its bound).
+//
 // Exact stage: Laplace expansion along the last selected column, recursively, on the
 // *untranslated* coordinates (translating would turn every entry into a two-component
 // difference and multiply the expansion lengths by 2^degree). Entries are exact: a
@@ -145,6 +148,88 @@ GDEL_HD int det_ones_exact(const LiftedRows& R, const int* rows, const int* cols
   }
 }
 
+// --- integer stage ----------------------------------------------------------------------
+// Between the filter and the expansions: when every entry of a determinant is a small
+// integer, its exact value fits a signed 128-bit integer and is computed directly. These
+// are exactly the inputs whose tests are mostly exact ties (lattice points: grids, voxel
+// data, integer points on a common sphere), decided by the expansions (thousands of
+// operations and up to 54 KB of work buffer for a lifted determinant) and then by the
+// simulation of simplicity, whose minors go the same way. The result is the same sign:
+// this is an evaluation order, not a change of predicate.
+//
+// Condition, checked per call on the entries used: every coordinate is an integer with
+// |x| <= 2^23 and every weight an integer with |w| <= 2^46 (a weight of 0 for unweighted
+// input). Bound (no overflow): a coordinate difference is at most 2^24; a height
+// h = x^2 + y^2 + z^2 - w at most 3 * 2^46 + 2^46 = 2^48 (computed in int64), a height
+// difference at most 2^49. With D the K x K matrix of differences to the last row
+// (det[[q_i, 1]] = det D), only the last column can be h, and the permanent of D bounds
+// every partial sum of the Laplace expansion along that column: for K = 4 it is at most
+// 4 * 2^49 * 3! * (2^24)^3 < 2^127 - 1, for K <= 3 far less. No floating-point operation
+// is involved (so no contraction concern), and the bounds hold on host and device alike.
+inline constexpr double kIntCoordMax = 0x1p23;
+inline constexpr double kIntWeightMax = 0x1p46;
+using i128 = __int128;
+
+// x as v when x is an integer with |x| <= max (false for NaN, infinities, fractions).
+GDEL_HD GDEL_FORCEINLINE bool small_integer(double x, double max, std::int64_t& v) {
+  if (!(fp::abs(x) <= max)) return false;
+  v = static_cast<std::int64_t>(x);  // |x| <= 2^46: defined, truncates
+  return static_cast<double>(v) == x;
+}
+
+// Sign of det[[q_rows[i], 1]] over the columns cols[0..K) into `sign`, when the integer
+// stage applies (see above); false otherwise (nothing evaluated).
+template <int K>
+GDEL_HD bool det_ones_int(const LiftedRows& R, const int* rows, const int* cols, int& sign) {
+  std::int64_t q[K + 1][K];
+  for (int i = 0; i <= K; ++i) {
+    const double* p = R.p[rows[i]];
+    for (int j = 0; j < K; ++j) {
+      const int c = cols[j];
+      if (c != 3) {
+        if (!small_integer(p[c], kIntCoordMax, q[i][j])) return false;
+      } else {
+        std::int64_t x, y, z, w;
+        if (!small_integer(p[0], kIntCoordMax, x) || !small_integer(p[1], kIntCoordMax, y) ||
+            !small_integer(p[2], kIntCoordMax, z) || !small_integer(R.w[rows[i]], kIntWeightMax, w))
+          return false;
+        q[i][j] = x * x + y * y + z * z - w;
+      }
+    }
+  }
+  i128 d[K][K];
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) d[i][j] = i128(q[i][j] - q[K][j]);
+  i128 det;
+  if constexpr (K == 1) {
+    det = d[0][0];
+  } else if constexpr (K == 2) {
+    det = d[0][0] * d[1][1] - d[1][0] * d[0][1];
+  } else {
+    // 2x2 minors of columns 0, 1 over row pairs (a, b)
+    auto m2 = [&](int a, int b) { return d[a][0] * d[b][1] - d[b][0] * d[a][1]; };
+    // 3x3 minor of columns 0..2 over rows a < b < c (Laplace along column 2)
+    auto m3 = [&](int a, int b, int c) { return d[a][2] * m2(b, c) - d[b][2] * m2(a, c) + d[c][2] * m2(a, b); };
+    if constexpr (K == 3) {
+      det = m3(0, 1, 2);
+    } else {  // Laplace along column 3
+      det = -d[0][3] * m3(1, 2, 3) + d[1][3] * m3(0, 2, 3) - d[2][3] * m3(0, 1, 3) + d[3][3] * m3(0, 1, 2);
+    }
+  }
+  sign = (det > 0) - (det < 0);
+  return true;
+}
+
+// Exact sign of det[[q_rows[i], 1]] over cols[0..K): the integer stage where it applies,
+// else the expansions (det_work(K, m) doubles at work).
+template <int K>
+GDEL_HD int det_ones_exact_sign(const LiftedRows& R, const int* rows, const int* cols, bool weighted,
+                                double* work) {
+  int s;
+  if (det_ones_int<K>(R, rows, cols, s)) return s;
+  return ex::sign(det_ones_exact<K>(R, rows, cols, weighted, work), work);
+}
+
 // FP value and rounding-error-free "absolute" value of h (see filters.hpp for counts):
 //   h  = ((x*x + y*y) + z*z) - w,   ha = ((x*x + y*y) + z*z) + |w|.
 GDEL_HD GDEL_FORCEINLINE void lift_fp(const double* p, double w, double& h, double& ha) {
@@ -224,8 +309,7 @@ GDEL_HD int det_ones_sign(const LiftedRows& R, const int* rows, const int* cols,
   }
   const int f = det_ones_filter<K>(R, rows, cols);
   if (f != kUncertain) return f;
-  const int len = det_ones_exact<K>(R, rows, cols, weighted, work);
-  return ex::sign(len, work);
+  return det_ones_exact_sign<K>(R, rows, cols, weighted, work);
 }
 
 // Decodes a column mask into ascending column ids; returns the count.

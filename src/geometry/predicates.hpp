@@ -15,7 +15,9 @@
 // Every predicate P comes in stages:
 //   P_filter(...)        -1 / +1 when the floating-point filter is certain, else kUncertain
 //                        (a filter never certifies 0: exact zeros go to the exact stage).
-//   P_exact(..., work)   exact sign by expansion arithmetic in the caller's work buffer.
+//   P_exact(..., work)   exact sign: in 128-bit integers when every entry is a small
+//                        integer (minors.hpp, "integer stage"), else by expansion
+//                        arithmetic in the caller's work buffer.
 //   P(..., work)         filter, then exact.
 //   P_sos(..., ids, work)  Edelsbrunner-Muecke simulation of simplicity by ORIGINAL input
 //                        indices (distinct): never 0; antisymmetric in (point, index) pairs.
@@ -165,13 +167,13 @@ GDEL_HD inline int sos_walk(const LiftedRows& R, bool lifted, bool weighted, dou
 GDEL_HD inline int orient3d_exact_rows(const LiftedRows& R, double* work) {
   const int rows[4] = {0, 1, 2, 3};
   const int cols[3] = {0, 1, 2};
-  return -ex::sign(det_ones_exact<3>(R, rows, cols, false, work), work);
+  return -det_ones_exact_sign<3>(R, rows, cols, false, work);
 }
 
 GDEL_HD inline int lifted_exact_rows(const LiftedRows& R, bool weighted, double* work) {
   const int rows[5] = {0, 1, 2, 3, 4};
   const int cols[4] = {0, 1, 2, 3};
-  return -ex::sign(det_ones_exact<4>(R, rows, cols, weighted, work), work);
+  return -det_ones_exact_sign<4>(R, rows, cols, weighted, work);
 }
 
 // E-M SoS of insphere/power given that the exact value is 0.
@@ -442,15 +444,13 @@ GDEL_HD inline int lifted_minor_exact(const double* const* p, const double* w, u
   }
   const bool weighted = w != nullptr;
   const int rows[5] = {0, 1, 2, 3, 4};
-  int len = 0;
   switch (k) {
-    case 1: len = detail::det_ones_exact<1>(R, rows, cols, weighted, work); break;
-    case 2: len = detail::det_ones_exact<2>(R, rows, cols, weighted, work); break;
-    case 3: len = detail::det_ones_exact<3>(R, rows, cols, weighted, work); break;
-    case 4: len = detail::det_ones_exact<4>(R, rows, cols, weighted, work); break;
+    case 1: return detail::det_ones_exact_sign<1>(R, rows, cols, weighted, work);
+    case 2: return detail::det_ones_exact_sign<2>(R, rows, cols, weighted, work);
+    case 3: return detail::det_ones_exact_sign<3>(R, rows, cols, weighted, work);
+    case 4: return detail::det_ones_exact_sign<4>(R, rows, cols, weighted, work);
     default: return 0;
   }
-  return ex::sign(len, work);
 }
 
 GDEL_HD inline int lifted_minor(const double* const* p, const double* w, unsigned mask,

@@ -598,6 +598,67 @@ TEST(Predicates, DegenerateCasesMatchGmpAndSosIsConsistent) {
 }
 
 // Hand-made exact degeneracies that walk deep into the SoS tables.
+// =========================================================================================
+// The integer stage (minors.hpp): taken exactly where its bounds hold, and exact there
+// =========================================================================================
+namespace {
+template <int K>
+bool int_stage(const gdel::geom::detail::LiftedRows& R, const int* cols, int& s) {
+  const int rows[5] = {0, 1, 2, 3, 4};
+  return gdel::geom::detail::det_ones_int<K>(R, rows, cols, s);
+}
+}  // namespace
+
+TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
+  Generator g(4242);
+  Oracle o;
+  Failures fail;
+  long taken = 0, refused = 0, zeros = 0;
+  const auto coord_ok = [](double x) { return std::fabs(x) <= 0x1p23 && x == std::trunc(x); };
+  const auto weight_ok = [](double w) { return std::fabs(w) <= 0x1p46 && w == std::trunc(w); };
+  for (long t = 0; t < 60000; ++t) {
+    // the integer family; every fourth case another family (fractions, huge, tiny: refused)
+    const Case k = g.degenerate(t % 4 ? 9 : static_cast<int>(t / 4));
+    gdel::geom::detail::LiftedRows R{{k.p[0], k.p[1], k.p[2], k.p[3], k.p[4]},
+                                     {k.w[0], k.w[1], k.w[2], k.w[3], k.w[4]}};
+    o.load(k, 5, true);
+    for (unsigned mask = 1; mask < 16; ++mask) {
+      int cols[4];
+      const int kc = gdel::geom::detail::mask_columns(mask, cols);
+      bool expect = true;
+      for (int i = 0; i <= kc; ++i)
+        for (int j = 0; j < kc; ++j) {
+          if (cols[j] < 3) expect = expect && coord_ok(k.p[i][cols[j]]);
+          else
+            expect = expect && coord_ok(k.p[i][0]) && coord_ok(k.p[i][1]) && coord_ok(k.p[i][2]) && weight_ok(k.w[i]);
+        }
+      int s = 7;
+      bool ok = false;
+      switch (kc) {
+        case 1: ok = int_stage<1>(R, cols, s); break;
+        case 2: ok = int_stage<2>(R, cols, s); break;
+        case 3: ok = int_stage<3>(R, cols, s); break;
+        default: ok = int_stage<4>(R, cols, s); break;
+      }
+      if (ok != expect) fail.add("integer stage taken=" + std::to_string(ok) + " mask " + std::to_string(mask) + " " + describe(k, 5));
+      if (!ok) {
+        ++refused;
+        continue;
+      }
+      ++taken;
+      const int x = o.minor(mask);
+      zeros += x == 0;
+      if (s != x) fail.add("integer stage sign, mask " + std::to_string(mask) + " " + describe(k, 5));
+    }
+  }
+  std::printf("[integer stage] %ld minors taken (%ld zero), %ld refused\n", taken, zeros, refused);
+  // all three outcomes occur, so the checks above have something to see
+  EXPECT_GT(taken, 100000);
+  EXPECT_GT(zeros, 10000);
+  EXPECT_GT(refused, 10000);
+  fail.report("integer stage");
+}
+
 TEST(Predicates, SosDeepDegeneracies) {
   Oracle o;
   std::vector<double> work(kPredicateWork);

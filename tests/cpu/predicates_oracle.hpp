@@ -381,6 +381,48 @@ class Generator {
         }
         break;
       }
+      case 9: {  // integers at the integer stage's limits (minors.hpp): |x| <= 2^23, |w| <= 2^46, and just past
+        const double X = 0x1p23, W = 0x1p46;
+        switch (integer(0, 2)) {
+          case 0: {  // cospherical lattice points, scaled and moved to large coordinates
+            const auto& sph = sphere_points();  // radius sqrt(2925) < 55
+            const double m = integer(1, 150000);
+            const double lim = X - 55.0 * m;
+            const double ox = std::floor(uniform(-lim, lim)), oy = std::floor(uniform(-lim, lim)),
+                         oz = std::floor(uniform(-lim, lim));
+            const double w = (rng_() & 1) ? 0.0 : static_cast<double>(integer(-1000, 1000)) * 0x1p36;
+            for (int i = 0; i < 5; ++i) {
+              const auto& q = sph[rng_() % sph.size()];
+              k.p[i][0] = q[0] * m + ox;
+              k.p[i][1] = q[1] * m + oy;
+              k.p[i][2] = q[2] * m + oz;
+              k.w[i] = w;  // equal weights: the power test is the insphere test
+            }
+            break;
+          }
+          case 1: {  // coordinates and weights from the extremes (coplanar, collinear, equal)
+            const double xs[] = {0.0, 1.0, -1.0, X - 1.0, X, -X, X + 1.0, -X - 1.0, X + 2.0};
+            const double ws[] = {0.0, 1.0, W - 1.0, W, -W, W + 1.0, -W - 2.0, 3.0 * W};
+            for (int i = 0; i < 5; ++i) {
+              for (int c = 0; c < 3; ++c) k.p[i][c] = xs[rng_() % 9 < 7 ? rng_() % 6 : 6 + rng_() % 3];
+              k.w[i] = ws[rng_() % 8];
+            }
+            break;
+          }
+          default: {  // lifted points on a common hyperplane, large integers
+            const double a = integer(-8, 8), b = integer(-8, 8), c = integer(-8, 8);
+            const double d = static_cast<double>(integer(-(1 << 30), 1 << 30)) * 0x1p14;
+            for (int i = 0; i < 5; ++i) {
+              for (int t = 0; t < 3; ++t) k.p[i][t] = static_cast<double>(integer(-(1 << 22), 1 << 22));
+              const double h = a * k.p[i][0] + b * k.p[i][1] + c * k.p[i][2] + d;
+              const double sq = k.p[i][0] * k.p[i][0] + k.p[i][1] * k.p[i][1] + k.p[i][2] * k.p[i][2];
+              k.w[i] = sq - h;  // exact: integers below 2^53
+            }
+            break;
+          }
+        }
+        break;
+      }
       default: {  // a degenerate family above, then one coordinate nudged by one ulp
         k = degenerate(integer(0, kFamilies - 2));
         const int i = integer(0, 4), c = integer(0, 2);
@@ -397,7 +439,7 @@ class Generator {
     }
     return k;
   }
-  static constexpr int kFamilies = 10;
+  static constexpr int kFamilies = 11;
 
   static double in_range(double x) {
     const double a = std::fabs(x);
