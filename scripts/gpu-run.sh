@@ -533,14 +533,18 @@ case "$plan" in
     step gstar4d_million 60 "$tbin/gpu_gstar4d" --gtest_filter='*MillionPoints*'
     ;;
   s17a)  # session 17: __device__ lambdas (gpu_star_stage), the predicates' integer stage on the device (GMP), and
-          # its effect on grid and sphere: gdel-bench-old (7099925, before the integer stage) and this build alternating
+          # its effect on grid and sphere: gdel-bench-old (7099925: no integer stage), this build with the integer
+          # decision of the fast forms off (GDEL_INTEGER_FAST=0: the integer stage in the deferred exact pass only)
+          # and on (default), alternating
     step predicates 90 "$tbin/gpu_predicates"
     step star_stage 120 "$tbin/gpu_star_stage"
     step parallel 60 "$tbin/gpu_parallel"
     for r in 1 2; do
       step "s17a_old$r" 90 "$bin/gdel-bench-old" --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+      GDEL_INTEGER_FAST=0 bench "s17a_slow$r" 90 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
       bench "s17a_new$r" 90 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     done
+    step s17a_old_uniform 60 "$bin/gdel-bench-old" --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
     bench s17a_uniform 60 --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
   s17b)  # session 17: the regression tests on the final binaries (regular triangulation and gStar4D use the integer stage too)
