@@ -10,19 +10,12 @@
 //   insphere(tet, ∞) = outside.
 // Every decision has a fast form (floating-point filter; returns kUndecided when it
 // cannot certify a non-zero sign) and an exact form (exact arithmetic, then
-// simulation of simplicity by original input index: never 0). When every input point is
-// a point of the integer stage (Geo::int_points, see all_integer_points), a fast form
-// whose filter fails and whose points are all finite decides at once with the exact form
-// and no work buffer (exact evaluations over such points are integer arithmetic):
-// the exact-tie-heavy lattice inputs (grids, integer spheres) then seldom need the
-// deferred exact pass. insphere ties are
+// simulation of simplicity by original input index: never 0). insphere ties are
 // broken by perturbing the lifting first (insphere_lift_sos), so the exact Delaunay
 // triangulation has no flat tets (see orient4).
 #pragma once
 
 #include <cstdint>
-#include <cstdlib>
-#include <string>
 
 #include "geometry/predicates.hpp"
 #include "mesh/conventions.hpp"
@@ -39,22 +32,13 @@ struct Geo {
   // of the regular triangulation), and a star may die (star.hpp: every facet beyond).
   // Only the star splaying engine reads it; gFlip3D's tests (insphere) ignore it.
   const double* w = nullptr;
-  // Every finite point (and weight) is a point of the integer stage (geom::integer_point).
-  bool int_points = false;
 
   GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
-  // The fast forms' integer decision applies: integer input and no ∞ (K is not integral).
-  GDEL_HD bool ints(vid_t a, vid_t b, vid_t c, vid_t d, vid_t e = 0) const {
-    return int_points && a != inf && b != inf && c != inf && d != inf && e != inf;
-  }
 
   // orient3d(a,b,c,d) > 0 iff (a,b,c,d) is positively oriented.
   GDEL_HD int orient_fast(vid_t a, vid_t b, vid_t c, vid_t d) const {
     int s = geom::orient3d_filter(p(a), p(b), p(c), p(d));
-    if (s == geom::kUncertain || s == 0) {
-      if (ints(a, b, c, d)) return orient_exact(a, b, c, d, nullptr);
-      return par::kUndecided;
-    }
+    if (s == geom::kUncertain || s == 0) return par::kUndecided;
     bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
     return neg ? -s : s;
   }
@@ -73,7 +57,6 @@ struct Geo {
   // dropping the flat tets of an output: the filter's sign or kUndecided, then exact.
   GDEL_HD std::int8_t volume_sign_fast(const vid_t* v) const {
     const int s = geom::orient3d_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]));
-    if (s == geom::kUncertain && ints(v[0], v[1], v[2], v[3])) return volume_sign_exact(v, nullptr);
     return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
   }
   GDEL_HD std::int8_t volume_sign_exact(const vid_t* v, double* work) const {
@@ -109,7 +92,6 @@ struct Geo {
       } else {
         int s = geom::power_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), w[v[0]], w[v[1]], w[v[2]],
                                    w[v[3]], w[v[4]]);
-        if ((s == geom::kUncertain || s == 0) && int_points) return orient4<true>(v, nullptr);  // no ∞ here
         return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
       }
     }
@@ -119,7 +101,6 @@ struct Geo {
                                        sid[v[2]], sid[v[3]], sid[v[4]], work);
       } else {
         int s = geom::insphere_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]));
-        if ((s == geom::kUncertain || s == 0) && int_points) return orient4<true>(v, nullptr);  // no ∞ here
         return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
       }
     }
@@ -131,9 +112,6 @@ struct Geo {
       s = geom::orient3d_sos(p(u[0]), p(u[1]), p(u[2]), p(u[3]), sid[u[0]], sid[u[1]], sid[u[2]], sid[u[3]], work);
     } else {
       s = geom::orient3d_filter(p(u[0]), p(u[1]), p(u[2]), p(u[3]));
-      if ((s == geom::kUncertain || s == 0) && int_points)  // u: the four finite points
-        s = geom::orient3d_sos(p(u[0]), p(u[1]), p(u[2]), p(u[3]), sid[u[0]], sid[u[1]], sid[u[2]], sid[u[3]],
-                               nullptr);
       if (s == geom::kUncertain || s == 0) return par::kUndecided;
     }
     return j < 4 ? s : -s;
@@ -154,23 +132,9 @@ struct Geo {
                                      sid[t[3]], sid[e], work);
     } else {
       int s = geom::insphere_filter(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
-      if ((s == geom::kUncertain || s == 0) && ints(t[0], t[1], t[2], t[3], e)) return insphere<true>(t, e, nullptr);
       return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
     }
   }
 };
-
-// Whether every point of xyz[0, n) (and weight of w, when not nullptr) is a point of the
-// integer stage: Geo::int_points. GDEL_INTEGER_FAST=0 says no (for measurements: the
-// integer stage still runs in the deferred exact pass). Synchronizes.
-template <class B>
-bool all_integer_points(par::Context<B>& ctx, const double* xyz, const double* w, std::int64_t n) {
-  if (const char* e = std::getenv("GDEL_INTEGER_FAST"); e && std::string(e) == "0") return false;
-  if (n <= 0) return false;
-  const std::int64_t off = par::count_indices(ctx, static_cast<std::size_t>(n), [=] GDEL_LAMBDA(std::int64_t i) {
-    return !geom::integer_point(xyz + 3 * i, w ? w[i] : 0.0);
-  });
-  return off == 0;
-}
 
 }  // namespace gdel::flip

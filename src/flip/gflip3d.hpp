@@ -94,9 +94,7 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {
-    int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
-  }
+        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {}
 
   // Debug aid: GDEL_CHECK_MESH=1 runs the structural invariant checker after every
   // step and throws at the first violation (validate level 1; slow).
@@ -267,7 +265,7 @@ class GFlip3D {
     log_.release();
   }
   vid_t infinite() const { return static_cast<vid_t>(n_); }
-  Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_}; }
+  Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_)}; }
 
   // --- a given initial structure (src/grid/initial.hpp, Options::initial = grid) ---------
   // Instead of init()'s first tetrahedron: a valid triangulation of some of the points
@@ -1361,7 +1359,6 @@ class GFlip3D {
   Buffer<double, B>& xyz_;
   Buffer<std::int64_t, B>& sid_;
   std::int64_t n_;
-  bool int_points_ = false;  // Geo::int_points: every point is a point of the integer stage
   FlipConfig cfg_;
   Stats& st_;
   mesh::TetMesh<B> mesh_;

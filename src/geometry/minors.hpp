@@ -36,7 +36,6 @@
 // expansion, with the permanent alongside. See filters.hpp for the error analysis.
 #pragma once
 
-#include <cassert>
 #include <cstdint>
 
 #include "core/macros.hpp"
@@ -228,7 +227,6 @@ GDEL_HD int det_ones_exact_sign(const LiftedRows& R, const int* rows, const int*
                                 double* work) {
   int s;
   if (det_ones_int<K>(R, rows, cols, s)) return s;
-  assert(work != nullptr && "work = nullptr is only for points of the integer stage (integer_point)");
   return ex::sign(det_ones_exact<K>(R, rows, cols, weighted, work), work);
 }
 

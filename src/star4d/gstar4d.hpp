@@ -69,8 +69,7 @@ void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid
   }();
   st.working_set_pairs = static_cast<I64>(ws.ids.size());
   t0 = std::chrono::steady_clock::now();
-  const bool int_points = flip::all_integer_points(ctx, P.data(), weights, m);
-  const flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m), weights, int_points};
+  const flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m), weights};
   StarStage<B> stage(ctx, g, m);
   stage.splay(ws.offsets.data(), ws.ids.data());
   ctx.synchronize();
