@@ -554,6 +554,14 @@ case "$plan" in
     step greg3d 120 "$tbin/gpu_greg3d"
     step gstar4d_million 60 "$tbin/gpu_gstar4d" --gtest_filter='*MillionPoints*'
     ;;
+  s17c)  # session 17, final binaries (integer stage only): uniform against gdel-bench-old (7099925) alternating, then
+          # every generator at 10^6 for the targets table
+    for r in 1 2; do
+      step "s17c_old$r" 90 "$bin/gdel-bench-old" --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s17c_new$r" 90 --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    bench s17c_gen 200 --dist gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
