@@ -562,6 +562,12 @@ case "$plan" in
     done
     bench s17c_gen 200 --dist gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
+  s18a)  # session 18: step profiles (GDEL_PROFILE) of sphere, grid and uniform at 10^6 and uniform 10^7
+    for d in sphere grid uniform; do
+      GDEL_PROFILE=1 bench "s18a_$d" 120 --dist $d --n 1000000 --methods gdel3d-cuda-dev --repeat 2
+    done
+    GDEL_PROFILE=1 bench s18a_u7 120 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -10,12 +10,18 @@
 //   insphere(tet, ∞) = outside.
 // Every decision has a fast form (floating-point filter; returns kUndecided when it
 // cannot certify a non-zero sign) and an exact form (exact arithmetic, then
-// simulation of simplicity by original input index: never 0). insphere ties are
+// simulation of simplicity by original input index: never 0). The exact forms take a
+// scratch of geom::kPredicateWork doubles; given work = nullptr they decide only what
+// the integer stage decides without one (Geo::int_points and no ∞ among the points: ∞'s
+// kernel point K is not integral) and answer kUndecided otherwise, so that
+// par::fast_then_exact_tiered can try them at full occupancy first. insphere ties are
 // broken by perturbing the lifting first (insphere_lift_sos), so the exact Delaunay
 // triangulation has no flat tets (see orient4).
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
+#include <string>
 
 #include "geometry/predicates.hpp"
 #include "mesh/conventions.hpp"
@@ -32,8 +38,16 @@ struct Geo {
   // of the regular triangulation), and a star may die (star.hpp: every facet beyond).
   // Only the star splaying engine reads it; gFlip3D's tests (insphere) ignore it.
   const double* w = nullptr;
+  // Every finite point (and weight) is a point of the integer stage
+  // (geom::integer_point; all_integer_points below): exact evaluations over finite
+  // points then never touch the scratch.
+  bool int_points = false;
 
   GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
+  // Whether an exact form may go on with work = nullptr (see the top of this file).
+  GDEL_HD bool scratch_free(vid_t a, vid_t b, vid_t c, vid_t d, vid_t e = 0) const {
+    return int_points && a != inf && b != inf && c != inf && d != inf && e != inf;
+  }
 
   // orient3d(a,b,c,d) > 0 iff (a,b,c,d) is positively oriented.
   GDEL_HD int orient_fast(vid_t a, vid_t b, vid_t c, vid_t d) const {
@@ -43,6 +57,7 @@ struct Geo {
     return neg ? -s : s;
   }
   GDEL_HD int orient_exact(vid_t a, vid_t b, vid_t c, vid_t d, double* work) const {
+    if (!work && !scratch_free(a, b, c, d)) return par::kUndecided;
     int s = geom::orient3d_sos(p(a), p(b), p(c), p(d), sid[a], sid[b], sid[c], sid[d], work);
     bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
     return neg ? -s : s;
@@ -60,6 +75,7 @@ struct Geo {
     return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
   }
   GDEL_HD std::int8_t volume_sign_exact(const vid_t* v, double* work) const {
+    if (!work && !scratch_free(v[0], v[1], v[2], v[3])) return par::kUndecided;
     return static_cast<std::int8_t>(geom::orient3d_exact(p(v[0]), p(v[1]), p(v[2]), p(v[3]), work));
   }
 
@@ -81,6 +97,9 @@ struct Geo {
   // survive as lower-hull facets under the lifting perturbation (docs/gdel3d.md).
   template <bool Exact>
   GDEL_HD int orient4(const vid_t* v, double* work) const {
+    if constexpr (Exact) {  // (with ∞ the test is over the four finite points)
+      if (!work && !int_points) return par::kUndecided;
+    }
     int j = -1;
     for (int i = 0; i < 5; ++i)
       if (v[i] == inf) j = i;
@@ -128,6 +147,7 @@ struct Geo {
     int j = inf_slot(t, inf);
     if (j >= 0) return orient<Exact>(t[face_vertex(j, 0)], t[face_vertex(j, 1)], t[face_vertex(j, 2)], e, work);
     if constexpr (Exact) {
+      if (!work && !int_points) return par::kUndecided;
       return geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]], sid[t[2]],
                                      sid[t[3]], sid[e], work);
     } else {
@@ -136,5 +156,18 @@ struct Geo {
     }
   }
 };
+
+// Whether every point of xyz[0, n) (and weight of w, when not nullptr) is a point of the
+// integer stage: Geo::int_points. GDEL_EXACT_TIERS=0 says no (for measurements: the
+// undecided items then all go to the scratch threads). Synchronizes.
+template <class B>
+bool all_integer_points(par::Context<B>& ctx, const double* xyz, const double* w, std::int64_t n) {
+  if (const char* e = std::getenv("GDEL_EXACT_TIERS"); e && std::string(e) == "0") return false;
+  if (n <= 0) return false;
+  const std::int64_t off = par::count_indices(ctx, static_cast<std::size_t>(n), [=] GDEL_LAMBDA(std::int64_t i) {
+    return !geom::integer_point(xyz + 3 * i, w ? w[i] : 0.0);
+  });
+  return off == 0;
+}
 
 }  // namespace gdel::flip

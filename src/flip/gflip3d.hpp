@@ -80,10 +80,13 @@ struct FlipConfig {
   std::int64_t max_flips_per_iteration = std::int64_t(1) << 24;
 };
 
-// The fast/exact split of the parallel layer with the predicates' scratch size.
+// The fast/exact split of the parallel layer with the predicates' scratch size. exact
+// returns whether it decided; with g.int_points the undecided items are first tried
+// without a scratch at full occupancy (par::fast_then_exact_tiered, Geo::int_points).
 template <class B, class Fast, class Exact>
-std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact) {
-  return par::fast_then_exact(ctx, n, undecided, fast, exact, geom::kPredicateWork);
+std::int64_t fast_then_exact(Context<B>& ctx, const Geo& g, std::int64_t n, std::int8_t* undecided, Fast fast,
+                             Exact exact) {
+  return par::fast_then_exact_tiered(ctx, n, undecided, fast, exact, geom::kPredicateWork, g.int_points);
 }
 
 template <class B>
@@ -94,7 +97,9 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {}
+        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {
+    int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
+  }
 
   // Debug aid: GDEL_CHECK_MESH=1 runs the structural invariant checker after every
   // step and throws at the first violation (validate level 1; slow).
@@ -265,7 +270,7 @@ class GFlip3D {
     log_.release();
   }
   vid_t infinite() const { return static_cast<vid_t>(n_); }
-  Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_)}; }
+  Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_}; }
 
   // --- a given initial structure (src/grid/initial.hpp, Options::initial = grid) ---------
   // Instead of init()'s first tetrahedron: a valid triangulation of some of the points
@@ -479,6 +484,7 @@ class GFlip3D {
     tid_t* vt = vert_tet_.data();
     Geo gk = geo();
     gk.inf = -1;  // K as a genuine point for the cone test
+    gk.int_points = false;  // (K is not integral, and ∞ no longer marks it)
     const vid_t K = inf;
     const vid_t o0 = t0[0], o1 = t0[1], o2 = t0[2], o3 = t0[3];
     auto locate = [=] GDEL_LAMBDA(std::int64_t q, double* work, bool exact) -> bool {
@@ -497,8 +503,8 @@ class GFlip3D {
     };
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(n_));
     st_.exact_evaluations += fast_then_exact(
-        ctx_, n_, und.data(), [=] GDEL_LAMBDA(std::int64_t q) { return locate(q, nullptr, false); },
-        [=] GDEL_LAMBDA(std::int64_t q, double* work) { locate(q, work, true); });
+        ctx_, gk, n_, und.data(), [=] GDEL_LAMBDA(std::int64_t q) { return locate(q, nullptr, false); },
+        [=] GDEL_LAMBDA(std::int64_t q, double* work) { return locate(q, work, true); });
     todo_.resize(static_cast<std::size_t>(n_));
     std::size_t m = par::select_indices(ctx_, static_cast<std::size_t>(n_), todo_.data(),
                                         [=] GDEL_LAMBDA(vid_t q) { return vt[q] >= 0; });
@@ -738,8 +744,8 @@ class GFlip3D {
     };
     // vt[q] is rewritten by the pass that decides it; undecided items keep the old tet.
     st_.exact_evaluations += fast_then_exact(
-        ctx_, u, und.data(), [=] GDEL_LAMBDA(std::int64_t i) { return reloc(i, nullptr, false); },
-        [=] GDEL_LAMBDA(std::int64_t i, double* work) { reloc(i, work, true); });
+        ctx_, gg, u, und.data(), [=] GDEL_LAMBDA(std::int64_t i) { return reloc(i, nullptr, false); },
+        [=] GDEL_LAMBDA(std::int64_t i, double* work) { return reloc(i, work, true); });
     par::mark(ctx_, "insert: relocate in split");
     // 6. reset split marks, drop inserted points from the work list
     par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(std::int64_t s) { split_of[ch[4 * s]] = -1; });
@@ -797,13 +803,18 @@ class GFlip3D {
     std::int32_t* pp = prop.data();
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(na));
     st_.exact_evaluations += fast_then_exact(
-        ctx_, na, und.data(),
+        ctx_, g, na, und.data(),
         [=] GDEL_LAMBDA(std::int64_t k) {
           int p = propose_flip<false>(g, m, A[k], nullptr);
           pp[k] = p;
           return p != kUndecidedResult;
         },
-        [=] GDEL_LAMBDA(std::int64_t k, double* work) { pp[k] = propose_flip<true>(g, m, A[k], work); });
+        [=] GDEL_LAMBDA(std::int64_t k, double* work) {
+          const int p = propose_flip<true>(g, m, A[k], work);
+          if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
+          pp[k] = p;
+          return true;
+        });
     par::mark(ctx_, "flip: propose");
     und.release();
     return commit_flips(A, na, prop, with_log) > 0;
@@ -828,17 +839,28 @@ class GFlip3D {
     // input most facets are stuck ties, re-proposed (exactly, with SoS) every iteration.
     const bool keep_stuck = cfg_.independent_splits;
     auto is_proposer = [=] GDEL_LAMBDA(std::int64_t k) { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); };
-    // The proposer list (positions in A: na < 2^31, as tets) is counted first and sized
-    // exactly: in the last flip loop, over every tet, few of them propose, and a list
-    // sized by the active set was 54 bytes per point of the run's peak (bench/RESULTS.md).
-    std::int64_t np = par::count_indices(ctx_, static_cast<std::size_t>(na), is_proposer);
+    // The proposer list (positions in A: na < 2^31, as tets). Over a large active set it
+    // is counted first and sized exactly: in the last flip loop, over every tet, few of
+    // them propose, and a list sized by the active set was 54 bytes per point of the
+    // run's peak (bench/RESULTS.md). Over a smaller one (par::kUncountedListMax) it is
+    // sized by the set, which saves a pass and a wait on the count in most iterations.
+    Buffer<std::int32_t, B> pl(ctx_);
+    std::int64_t np;
+    if (na > par::kUncountedListMax) {
+      np = par::count_indices(ctx_, static_cast<std::size_t>(na), is_proposer);
+      if (np > 0) {
+        pl.resize(static_cast<std::size_t>(np));
+        par::select_indices(ctx_, static_cast<std::size_t>(na), pl.data(), is_proposer);
+      }
+    } else {
+      pl.resize(static_cast<std::size_t>(na));
+      np = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(na), pl.data(), is_proposer));
+    }
     if (np == 0) {
       active_.release();
       return 0;
     }
-    Buffer<std::int32_t, B> pl(ctx_, static_cast<std::size_t>(np));
     std::int32_t* plp = pl.data();
-    par::select_indices(ctx_, static_cast<std::size_t>(na), plp, is_proposer);
     par::mark(ctx_, "flip: select proposers");
     // vote: the smallest proposer index wins each tet (atomic max of INT_MAX - index, so
     // that -1 is the empty vote); accepted flips are disjoint
@@ -959,8 +981,8 @@ class GFlip3D {
     // exact orientation); (b) write. Pass (a) is split fast/exact.
     const BuildFlipRecord bfr{m, g, A, flp, pp, rec};
     st_.exact_evaluations += fast_then_exact(
-        ctx_, nfl, und2.data(), [=] GDEL_LAMBDA(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
-        [=] GDEL_LAMBDA(std::int64_t f, double* work) { bfr.template run<true>(f, work); });
+        ctx_, g, nfl, und2.data(), [=] GDEL_LAMBDA(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
+        [=] GDEL_LAMBDA(std::int64_t f, double* work) { return bfr.template run<true>(f, work); });
     par::mark(ctx_, "flip: records");
     prop.release();  // (the codes and the accepted list are the records' now)
     fl.release();
@@ -1057,18 +1079,29 @@ class GFlip3D {
       mesh_.release(fr, nfl - n23);
     }
     off23.release();
-    // next active set: rejected proposers (the stuck tets among them) and the flips' new tets
-    Buffer<tid_t, B> nxt(ctx_, static_cast<std::size_t>(np + 3 * nfl));
-    tid_t* nx = nxt.data();
-    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) { nx[j] = ap[j] ? -1 : A[plp[j]]; });
-    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
-      for (int a = 0; a < 3; ++a) nx[np + 3 * f + a] = rec[f].out[a];
+    // next active set: the rejected proposers (the stuck tets among them) that no flip
+    // took, and the flips' new tets, in slot order. Each is marked (kQueued) by exactly
+    // one thread: a proposer whose tet a flip took (stamped above) is left to that flip,
+    // or was freed. The marked slots are then gathered in order by one pass over the
+    // slots (no sort, no unique: one wait instead of two) and unmarked.
+    const std::size_t slots = static_cast<std::size_t>(mesh_.size());
+    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) {
+      if (ap[j]) return;
+      const tid_t t = A[plp[j]];
+      if ((mark[t] & ~std::uint64_t(0xffffffff)) != stamp) m.state[t] |= mesh::kQueued;
     });
-    const std::size_t tot = static_cast<std::size_t>(np + 3 * nfl);
-    par::sort_keys(ctx_, nx, tot);
-    std::size_t nu = par::unique(ctx_, nx, tot);
-    Buffer<tid_t, B> act(ctx_, nu);
-    std::size_t na2 = par::copy_if(ctx_, nx, act.data(), nu, [=] GDEL_LAMBDA(tid_t t) { return t >= 0; });
+    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
+      for (int a = 0; a < 3; ++a)
+        if (rec[f].out[a] >= 0) m.state[rec[f].out[a]] |= mesh::kQueued;
+    });
+    Buffer<tid_t, B> act(ctx_, static_cast<std::size_t>(np + 3 * nfl));
+    tid_t* acp = act.data();
+    const std::size_t na2 = par::select_indices(ctx_, slots, acp, [=] GDEL_LAMBDA(tid_t t) {
+      return (m.state[t] & mesh::kQueued) != 0;
+    });
+    par::parallel_for(ctx_, static_cast<std::int64_t>(na2), [=] GDEL_LAMBDA(std::int64_t j) {
+      m.state[acp[j]] &= static_cast<std::uint8_t>(~mesh::kQueued);
+    });
     act.resize(na2);
     active_ = std::move(act);
     par::mark(ctx_, "flip: next active set");
@@ -1239,12 +1272,17 @@ class GFlip3D {
     std::int64_t* pp = prop.data();
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(n));
     st_.exact_evaluations += fast_then_exact(
-        ctx_, n, und.data(),
+        ctx_, g, n, und.data(),
         [=] GDEL_LAMBDA(std::int64_t k) {
           pp[k] = propose_nonoptimal<false>(g, m, F[k], other_edges, nullptr);
           return pp[k] != kUndecidedResult;
         },
-        [=] GDEL_LAMBDA(std::int64_t k, double* work) { pp[k] = propose_nonoptimal<true>(g, m, F[k], other_edges, work); });
+        [=] GDEL_LAMBDA(std::int64_t k, double* work) {
+          const std::int64_t p = propose_nonoptimal<true>(g, m, F[k], other_edges, work);
+          if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
+          pp[k] = p;
+          return true;
+        });
     Buffer<std::int64_t, B> sel(ctx_, static_cast<std::size_t>(n));
     std::int64_t* sl = sel.data();
     std::int64_t ns = static_cast<std::int64_t>(  // (not const: nvcc, as above)
@@ -1342,8 +1380,8 @@ class GFlip3D {
     };
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(u, 1)));
     st_.exact_evaluations += fast_then_exact(
-        ctx_, u, und.data(), [=] GDEL_LAMBDA(std::int64_t i) { return walk(i, nullptr, false); },
-        [=] GDEL_LAMBDA(std::int64_t i, double* work) { walk(i, work, true); });
+        ctx_, g, u, und.data(), [=] GDEL_LAMBDA(std::int64_t i) { return walk(i, nullptr, false); },
+        [=] GDEL_LAMBDA(std::int64_t i, double* work) { return walk(i, work, true); });
     par::mark(ctx_, "relocate: DAG walk");
     // reset next[] for the consumed slots
     par::parallel_for(ctx_, nrec, [=] GDEL_LAMBDA(std::int64_t f) {
@@ -1359,6 +1397,7 @@ class GFlip3D {
   Buffer<double, B>& xyz_;
   Buffer<std::int64_t, B>& sid_;
   std::int64_t n_;
+  bool int_points_ = false;  // Geo::int_points: every point is a point of the integer stage
   FlipConfig cfg_;
   Stats& st_;
   mesh::TetMesh<B> mesh_;

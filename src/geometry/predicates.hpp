@@ -287,6 +287,22 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------
+// Points of the integer stage
+// ---------------------------------------------------------------------------------------
+
+// True when every coordinate of p is an integer with |x| <= 2^23 and w (the point's weight,
+// 0 when unweighted) an integer with |w| <= 2^46: the integer stage's condition
+// (minors.hpp). Every exact evaluation over such points only (each predicate here, every
+// SoS minor of theirs) is then done in 128-bit integers and never touches the work buffer,
+// so callers may pass work = nullptr for them (flip::Geo's exact forms do, with
+// Geo::int_points).
+GDEL_HD inline bool integer_point(const double* p, double w = 0.0) {
+  std::int64_t v;
+  return detail::small_integer(p[0], detail::kIntCoordMax, v) && detail::small_integer(p[1], detail::kIntCoordMax, v) &&
+         detail::small_integer(p[2], detail::kIntCoordMax, v) && detail::small_integer(w, detail::kIntWeightMax, v);
+}
+
+// ---------------------------------------------------------------------------------------
 // orient3d
 // ---------------------------------------------------------------------------------------
 

@@ -326,8 +326,8 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   };
   Buffer<std::int8_t, B> und(ctx, static_cast<std::size_t>(m));
   st.exact_evaluations += flip::fast_then_exact(
-      ctx, m, und.data(), [=] GDEL_LAMBDA(std::int64_t q) { return locate(q, nullptr, false); },
-      [=] GDEL_LAMBDA(std::int64_t q, double* work) { locate(q, work, true); });
+      ctx, g, m, und.data(), [=] GDEL_LAMBDA(std::int64_t q) { return locate(q, nullptr, false); },
+      [=] GDEL_LAMBDA(std::int64_t q, double* work) { return locate(q, work, true); });
   Buffer<vid_t, B> todo(ctx, static_cast<std::size_t>(m));
   std::int64_t nu = static_cast<std::int64_t>(
       par::select_indices(ctx, static_cast<std::size_t>(m), todo.data(), [=] GDEL_LAMBDA(vid_t q) { return vt[q] != -1; }));

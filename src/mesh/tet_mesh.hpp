@@ -35,6 +35,7 @@ enum TetState : std::uint8_t {
   kAlive = 1,
   kChanged = 2,   // created or modified since last checked: its faces need checking
   kEmpty = 4,     // holds no uninserted point (gFlip3D)
+  kQueued = 8,    // in the next active set being gathered (GFlip3D::commit_flips clears it)
 };
 
 enum FaceFlag : std::uint8_t {

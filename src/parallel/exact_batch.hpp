@@ -6,6 +6,11 @@
 //   compaction of the undecided items;
 //   pass 2 (only those): exact(i, work) with `work` a private scratch of
 //          work_doubles doubles for expansion arithmetic.
+// fast_then_exact_tiered(..., tiered): exact returns bool (false: not decided). With
+// `tiered`, between the two passes every undecided item is first tried at full
+// occupancy with work = nullptr; exact answers false where it needs the scratch
+// (flip::Geo on integer input: its evaluations over finite points run in the integer
+// stage and never touch it), and only those items go on to pass 2's scratch threads.
 // two_stage_signs is the same for a sign per item.
 // On the GPU pass 2 runs with a bounded number of threads, each owning a slice of a
 // global-memory scratch (exact expansions are far too long for registers), grid-
@@ -21,6 +26,10 @@
 namespace gdel::par {
 
 inline constexpr std::int8_t kUndecided = 2;
+// Index lists over at most this many items are sized by the items, not counted first:
+// the selection alone gives the count, one wait for the host instead of two, for at
+// most 32 MiB of int64 list (fast_then_exact; gFlip3D's proposer list).
+inline constexpr std::int64_t kUncountedListMax = std::int64_t(1) << 22;
 
 // Runs f(k, work) for k in [0, n) with a private scratch of work_doubles doubles.
 template <class F>
@@ -64,24 +73,62 @@ void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_do
 }
 #endif
 
+namespace detail {
+template <bool Tiers, class B, class Fast, class Exact>
+std::int64_t fast_then_exact_impl(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
+                                  std::size_t work_doubles, bool tiered) {
+  if (n <= 0) return 0;
+  parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
+  auto und = [=] GDEL_LAMBDA(std::int64_t i) { return undecided[i] != 0; };
+  // Over many items the undecided ones (few) are counted first, so that the list is as
+  // long as they are, not n (see kUncountedListMax).
+  Buffer<std::int64_t, B> list(ctx);
+  std::int64_t m;
+  if (n > kUncountedListMax) {
+    m = count_indices(ctx, static_cast<std::size_t>(n), und);
+    if (m == 0) return 0;
+    list.resize(static_cast<std::size_t>(m));
+    select_indices(ctx, static_cast<std::size_t>(n), list.data(), und);
+  } else {
+    list.resize(static_cast<std::size_t>(n));
+    m = static_cast<std::int64_t>(select_indices(ctx, static_cast<std::size_t>(n), list.data(), und));
+    if (m == 0) return 0;
+  }
+  std::int64_t* lp = list.data();
+  std::int64_t left = m;
+  if constexpr (Tiers) {  // (exact's return type is not asked for: nvcc's device lambdas hide it from host code)
+    if (tiered) {
+      parallel_for(ctx, m, [=] GDEL_LAMBDA(std::int64_t k) {
+        if (exact(lp[k], nullptr)) lp[k] = -1;
+      });
+      Buffer<std::int64_t, B> rest(ctx, static_cast<std::size_t>(m));
+      left = static_cast<std::int64_t>(
+          copy_if(ctx, lp, rest.data(), static_cast<std::size_t>(m), [=] GDEL_LAMBDA(std::int64_t i) { return i >= 0; }));
+      list = std::move(rest);
+      lp = list.data();
+    }
+  }
+  for_each_with_scratch(ctx, left, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[k], work); });
+  return m;
+}
+}  // namespace detail
+
 // Runs fast(i) on all n items (full occupancy); the items for which it returns false
 // (undecided) are compacted and run through exact(i, work) with a private scratch of
 // work_doubles doubles. `undecided` is caller scratch of n bytes. Returns the number
-// of items that needed the exact pass (synchronizes).
+// of items that needed an exact evaluation (synchronizes).
 template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
                              std::size_t work_doubles) {
-  if (n <= 0) return 0;
-  parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
-  // counted first: the list is as long as the undecided items (few), not n
-  auto und = [=] GDEL_LAMBDA(std::int64_t i) { return undecided[i] != 0; };
-  std::int64_t m = count_indices(ctx, static_cast<std::size_t>(n), und);
-  if (m == 0) return 0;
-  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(m));
-  std::int64_t* lp = list.data();
-  select_indices(ctx, static_cast<std::size_t>(n), lp, und);
-  for_each_with_scratch(ctx, m, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[k], work); });
-  return m;
+  return detail::fast_then_exact_impl<false>(ctx, n, undecided, fast, exact, work_doubles, false);
+}
+// The same with exact(i, work) returning whether it decided item i; with `tiered` the
+// undecided items are first tried with work = nullptr at full occupancy, and only
+// those it leaves go to the scratch threads (see the top of this file).
+template <class B, class Fast, class Exact>
+std::int64_t fast_then_exact_tiered(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
+                                    std::size_t work_doubles, bool tiered) {
+  return detail::fast_then_exact_impl<true>(ctx, n, undecided, fast, exact, work_doubles, tiered);
 }
 
 // Signs: out[i] = filter(i) (a sign, or kUndecided), then exact(i, work) for the

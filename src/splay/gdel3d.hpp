@@ -334,13 +334,14 @@ class GDel3D {
     const bool dbg = std::getenv("GDEL_SPLAY_DEBUG") != nullptr;
     auto t0 = std::chrono::steady_clock::now();
     auto lap = [&](const char* what) {
+      par::mark(ctx_, what);  // (GDEL_PROFILE; the splaying rounds mark their own steps)
       if (!dbg) return;
       ctx_.synchronize();
       std::fprintf(stderr, "gdel3d %s: %.3f s\n", what,
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     };
     res_.exact_evaluations += failed_flags(ctx_, mv, nt, g_, m_, fv.data(), &facet_sign_);
-    lap("failed vertices");
+    lap("repair: failed vertices");
     const std::int8_t* fvp = fv.data();
     Buffer<vid_t, B> failed(ctx_, static_cast<std::size_t>(m_));
     const std::size_t nf = par::select_indices(ctx_, static_cast<std::size_t>(m_), failed.data(),
@@ -350,14 +351,15 @@ class GDel3D {
     if (nf == 0) return;
     Buffer<U64, B> gone(ctx_);
     build_failed(failed, gone);
-    lap("stars of failed vertices");
+    lap("repair: stars of failed vertices");
     facet_sign_ = Buffer<std::int8_t, B>(ctx_);
     Buffer<U64, B> req(ctx_);
     sp_.set_source([this](const Buffer<vid_t, B>& verts) { pull(verts); });
     sp_.proofs(gone, req);
     sp_.checks(req);
+    par::mark(ctx_, "repair: first proofs and checks");
     sp_.run(req);
-    lap("splaying rounds");
+    lap("repair: splaying rounds");
     res_.splay = sp_.stats();
   }
 

@@ -633,11 +633,13 @@ class Splayer {
         req.resize(static_cast<std::size_t>(n));
       }
       if (n > 0) pull_targets(req);
+      par::mark(ctx_, "splay: requests, pull stars");
       if (debug_ > 1) std::fprintf(stderr, "  convexity violations: %lld, largest star %d triangles\n",
                                (long long)convexity_violations(),
                                nst_ ? par::reduce_max(ctx_, count_.data(), static_cast<std::size_t>(nst_), 0) : 0);
       const I64 n_raw = n;
       n = filter(req);
+      par::mark(ctx_, "splay: filter");
       if (debug_) std::fprintf(stderr, "splay round %lld: %lld requests, %lld new, %lld stars\n", (long long)ss_.rounds,
                                (long long)n_raw, (long long)n, (long long)nst_);
       if (n == 0) break;
@@ -646,9 +648,12 @@ class Splayer {
       add_history(req);
       Buffer<U64, B> gone(ctx_);
       insert_round(req, gone);
+      par::mark(ctx_, "splay: insert round");
       Buffer<U64, B> next(ctx_);
       proofs(gone, next);
+      par::mark(ctx_, "splay: proofs");
       checks(next);
+      par::mark(ctx_, "splay: checks");
       req = std::move(next);
     }
   }

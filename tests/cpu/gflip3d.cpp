@@ -1,5 +1,6 @@
 #include "common/gflip_cases.hpp"
 #include "common/nonoptimal_cases.hpp"
+#include "common/geo_cases.hpp"
 TEST(GFlip3DCpu, AllGenerators) { gdel::test::gflip_generator_cases(gdel::Backend::Cpu, 4000); }
 TEST(GFlip3DCpu, DegenerateAndHostileInput) { gdel::test::gflip_degenerate_cases(gdel::Backend::Cpu); }
 TEST(GFlip3DCpu, NonoptimalFlipsAllGenerators) { gdel::test::nonoptimal_generator_cases(gdel::Backend::Cpu, 2000); }
@@ -9,3 +10,4 @@ TEST(GFlip3DCpu, NonoptimalRoundsUnderIndependentSplits) { gdel::test::nonoptima
 TEST(GFlip3DCpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cpu, 20000); }
 TEST(GFlip3DCpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cpu, 6000, "64"); }
 TEST(GFlip3DCpu, IndependentSplitsLeaveFewerStuckFacets) { gdel::test::gflip_independent_splits_cases(gdel::Backend::Cpu); }
+TEST(GFlip3DCpu, ExactFormsWithoutScratchAndTieredPass) { gdel::test::geo_scratch_free_cases<gdel::par::Cpu>(); }

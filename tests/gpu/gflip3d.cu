@@ -1,5 +1,6 @@
 #include "common/gflip_cases.hpp"
 #include "common/nonoptimal_cases.hpp"
+#include "common/geo_cases.hpp"
 TEST(GFlip3DGpu, AllGenerators) { gdel::test::gflip_generator_cases(gdel::Backend::Cuda, 200000); }
 TEST(GFlip3DGpu, DegenerateAndHostileInput) { gdel::test::gflip_degenerate_cases(gdel::Backend::Cuda); }
 TEST(GFlip3DGpu, NonoptimalFlipsAllGenerators) { gdel::test::nonoptimal_generator_cases(gdel::Backend::Cuda, 50000); }
@@ -9,3 +10,4 @@ TEST(GFlip3DGpu, NonoptimalRoundsUnderIndependentSplits) { gdel::test::nonoptima
 TEST(GFlip3DGpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cuda, 200000); }
 TEST(GFlip3DGpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cuda, 20000, "256"); }
 TEST(GFlip3DGpu, IndependentSplitsLeaveFewerStuckFacets) { gdel::test::gflip_independent_splits_cases(gdel::Backend::Cuda); }
+TEST(GFlip3DGpu, ExactFormsWithoutScratchAndTieredPass) { gdel::test::geo_scratch_free_cases<gdel::par::Cuda>(); }

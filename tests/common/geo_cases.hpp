@@ -1,0 +1,183 @@
+// flip::Geo's exact forms without a scratch (work = nullptr) on integer input
+// (Geo::int_points), and the tiered fast/exact pass that relies on them
+// (par::fast_then_exact_tiered); written once over the backend tag and instantiated by
+// tests/cpu/gflip3d.cpp (Cpu) and tests/gpu/gflip3d.cu (Cuda).
+//
+// Checked: on lattice points (most tests exact ties) an exact form given no scratch
+// answers exactly what it answers with one, unless ∞'s kernel point (not integral) takes
+// part, where it answers kUndecided; without Geo::int_points it always answers
+// kUndecided; all_integer_points' condition; and that the tiered pass decides every item
+// as the plain exact pass does, the scratch-free items in its first tier.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "flip/geo.hpp"
+#include "parallel/exact_batch.hpp"
+
+namespace gdel::test {
+
+// Per tuple (five vertices v): orient4(v), insphere(v[0..3], v[4]), orient3d(v[0..3]) and
+// the volume sign of v[1..4] by the exact forms, with a scratch or (scratch = false)
+// with work = nullptr.
+inline constexpr int kTests = 4, kOrient = 2;
+GDEL_HD inline void geo_exact_signs(const flip::Geo& g, const vid_t* v, double* work, std::int8_t* r) {
+  r[0] = static_cast<std::int8_t>(g.orient4<true>(v, work));
+  r[1] = static_cast<std::int8_t>(g.insphere<true>(v, v[4], work));
+  r[2] = static_cast<std::int8_t>(g.orient<true>(v[0], v[1], v[2], v[3], work));
+  r[3] = g.volume_sign_exact(v + 1, work);
+}
+template <class B>
+std::vector<std::int8_t> geo_tuple_signs(par::Context<B>& ctx, const flip::Geo& g, const vid_t* up, int T,
+                                         bool scratch) {
+  using namespace gdel::par;
+  Buffer<std::int8_t, B> r(ctx, static_cast<std::size_t>(kTests * T));
+  std::int8_t* rp = r.data();
+  if (scratch) {
+    for_each_with_scratch(ctx, T, geom::kPredicateWork, [=] GDEL_LAMBDA(std::int64_t t, double* work) {
+      geo_exact_signs(g, up + 5 * t, work, rp + kTests * t);
+    });
+  } else {
+    parallel_for(ctx, T, [=] GDEL_LAMBDA(std::int64_t t) { geo_exact_signs(g, up + 5 * t, nullptr, rp + kTests * t); });
+  }
+  return r.to_host();
+}
+
+template <class B>
+void geo_scratch_free_cases() {
+  using namespace gdel::par;
+  using flip::Geo;
+  Context<B> ctx;
+  std::mt19937_64 rng(2026);
+  // n lattice points: {0..3}^3 scaled by 2^21 (coordinates up to 3 * 2^21 < 2^23) and
+  // moved by 2^21: nearly every insphere / orient4 test among them is an exact tie.
+  // Slot n is ∞'s kernel point, not integral (as in gFlip3D).
+  const int n = 64;
+  std::vector<double> xyz(3 * (n + 1));
+  for (int i = 0; i < n; ++i) {
+    xyz[3 * i + 0] = (i % 4) * 0x1p21 + 0x1p21;
+    xyz[3 * i + 1] = ((i / 4) % 4) * 0x1p21 - 0x1p21;
+    xyz[3 * i + 2] = (i / 16) * 0x1p21;
+  }
+  xyz[3 * n + 0] = 1.5 * 0x1p21 + 0.25;
+  xyz[3 * n + 1] = 0.5 * 0x1p21 + 0.25;
+  xyz[3 * n + 2] = 1.5 * 0x1p21 + 0.25;
+  std::vector<std::int64_t> sid(n + 1);
+  for (int i = 0; i <= n; ++i) sid[i] = (i * 37) % (n + 1);  // a permutation: distinct SoS indices
+  Buffer<double, B> P(ctx);
+  P.assign(xyz);
+  Buffer<std::int64_t, B> S(ctx);
+  S.assign(sid);
+
+  // all_integer_points: true here; false with a fraction, past 2^23, or a weight past 2^46
+  ASSERT_TRUE(flip::all_integer_points(ctx, P.data(), nullptr, n));
+  for (double bad : {0.5, 0x1p23 + 1.0, -0x1p23 - 1.0}) {
+    std::vector<double> q = xyz;
+    q[3 * 17 + 1] = bad;
+    Buffer<double, B> Q(ctx);
+    Q.assign(q);
+    EXPECT_FALSE(flip::all_integer_points(ctx, Q.data(), nullptr, n)) << bad;
+  }
+  {
+    std::vector<double> w(n, 0x1p46);
+    Buffer<double, B> W(ctx);
+    W.assign(w);
+    EXPECT_TRUE(flip::all_integer_points(ctx, P.data(), W.data(), n));
+    w[5] = 0x1p46 + 2.0;
+    W.assign(w);
+    EXPECT_FALSE(flip::all_integer_points(ctx, P.data(), W.data(), n));
+  }
+
+  // tuples of five distinct vertices; one in eight holds ∞ (vertex n) as v[0]
+  const int T = 20000;
+  std::vector<vid_t> tup(5 * T);
+  for (int t = 0; t < T; ++t) {
+    for (int k = 0; k < 5; ++k) {
+      vid_t v;
+      bool dup;
+      do {
+        v = (k == 0 && t % 8 == 0) ? vid_t(n) : static_cast<vid_t>(rng() % n);
+        dup = false;
+        for (int j = 0; j < k; ++j) dup |= tup[5 * t + j] == v;
+      } while (dup);
+      tup[5 * t + k] = v;
+    }
+  }
+  Buffer<vid_t, B> U(ctx);
+  U.assign(tup);
+  const vid_t* up = U.data();
+  const Geo gi{P.data(), S.data(), static_cast<vid_t>(n), nullptr, true};
+  const Geo gp{P.data(), S.data(), static_cast<vid_t>(n), nullptr, false};
+  const std::vector<std::int8_t> exact = geo_tuple_signs(ctx, gp, up, T, true);
+  const std::vector<std::int8_t> free_int = geo_tuple_signs(ctx, gi, up, T, false);
+  const std::vector<std::int8_t> free_plain = geo_tuple_signs(ctx, gp, up, T, false);
+  long decided = 0, inf_refused = 0, mismatches = 0, ties = 0;
+  for (int t = 0; t < T; ++t) {
+    const bool has_inf = t % 8 == 0;
+    for (int k = 0; k < kTests; ++k) {
+      const std::int8_t fi = free_int[kTests * t + k], fp = free_plain[kTests * t + k], ex = exact[kTests * t + k];
+      if (ex == kUndecided) ++mismatches;  // with a scratch: always decided
+      if (fp != kUndecided) ++mismatches;  // without Geo::int_points: never without a scratch
+      // ∞ among a test's points (v[0]): a plain orient3d with ∞ reads the kernel point
+      // (not integral) and is refused without a scratch. orient4 and insphere with ∞
+      // reduce to an orient3d of four finite points, and the volume sign reads v[1..4].
+      if (has_inf && k == kOrient) {
+        inf_refused += fi == kUndecided;
+        if (fi != kUndecided) ++mismatches;
+      } else {
+        if (fi != ex) ++mismatches;
+        decided += fi != kUndecided;
+      }
+    }
+    // the tests the filter leaves (the lattice's cospherical tuples: exact ties)
+    const vid_t* v = tup.data() + 5 * t;
+    const int f = has_inf ? 1
+                          : geom::insphere_filter(&xyz[3 * v[0]], &xyz[3 * v[1]], &xyz[3 * v[2]], &xyz[3 * v[3]],
+                                                  &xyz[3 * v[4]]);
+    if (f == 0 || f == geom::kUncertain) ++ties;
+  }
+  std::printf("[geo scratch-free] %d tuples: %ld tests decided without a scratch (%ld insphere tests left by the filter), %ld with ∞ refused\n",
+              T, decided, ties, inf_refused);
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(inf_refused, T / 8);
+  EXPECT_GT(ties, T / 20);
+
+  // The tiered pass: every item undecided by "fast", then exact with a scratch for the
+  // items that need one. Same signs as the plain exact pass; the first tier (no scratch)
+  // takes exactly the tuples without ∞.
+  for (bool tiered : {true, false}) {
+    Buffer<std::int8_t, B> r(ctx, static_cast<std::size_t>(kTests * T));
+    Buffer<std::int8_t, B> tier(ctx, static_cast<std::size_t>(T));
+    Buffer<std::int8_t, B> und(ctx, static_cast<std::size_t>(T));
+    std::int8_t* rp = r.data();
+    std::int8_t* tp = tier.data();
+    const std::int64_t m = fast_then_exact_tiered(
+        ctx, T, und.data(), [=] GDEL_LAMBDA(std::int64_t) { return false; },
+        [=] GDEL_LAMBDA(std::int64_t t, double* work) {
+          std::int8_t s[kTests];
+          geo_exact_signs(gi, up + 5 * t, work, s);
+          for (int k = 0; k < kTests; ++k)
+            if (s[k] == kUndecided) return false;
+          for (int k = 0; k < kTests; ++k) rp[kTests * t + k] = s[k];
+          tp[t] = work == nullptr ? 1 : 2;
+          return true;
+        },
+        geom::kPredicateWork, tiered);
+    EXPECT_EQ(m, T);
+    const std::vector<std::int8_t> rh = r.to_host(), th = tier.to_host();
+    long first = 0;
+    for (int t = 0; t < T; ++t) {
+      first += th[t] == 1;
+      EXPECT_EQ(th[t], (tiered && t % 8 != 0) ? 1 : 2) << t;
+      for (int k = 0; k < kTests; ++k) EXPECT_EQ(rh[kTests * t + k], exact[kTests * t + k]) << t << " " << k;
+    }
+    std::printf("[tiered pass] tiered=%d: %ld of %d items decided without a scratch\n", int(tiered), first, T);
+  }
+}
+
+}  // namespace gdel::test
