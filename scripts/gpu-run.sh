@@ -568,6 +568,19 @@ case "$plan" in
     done
     GDEL_PROFILE=1 bench s18a_u7 120 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s18b)  # session 18: tests; old (gdel-bench-old) / new alternating on uniform, grid, sphere; the new binary
+          # without the tiered exact pass (GDEL_EXACT_TIERS=0); step profiles of grid and sphere
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    for r in 1 2; do
+      step "s18b_old$r" 60 "$bin/gdel-bench-old" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s18b_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    GDEL_EXACT_TIERS=0 bench s18b_notiers 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+    step s18b_old7 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s18b_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s18b_prof 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
