@@ -12,9 +12,11 @@
 // cannot certify a non-zero sign) and an exact form (exact arithmetic, then
 // simulation of simplicity by original input index: never 0). The exact forms take a
 // scratch of geom::kPredicateWork doubles; given work = nullptr they decide only what
-// the integer stage decides without one (Geo::int_points and no ∞ among the points: ∞'s
-// kernel point K is not integral) and answer kUndecided otherwise, so that
-// par::fast_then_exact_tiered can try them at full occupancy first. insphere ties are
+// the integer stage decides without one (Geo::int_all; or Geo::int_points and no ∞ among
+// the points, whose kernel point K is then not known to be of the stage) and answer
+// kUndecided otherwise, so that par::fast_then_exact_tiered can try them without a
+// scratch first, and the star splaying engine on integer input runs without one
+// (Geo::int_all, par::for_each_with_scratch's scratch_free). insphere ties are
 // broken by perturbing the lifting first (insphere_lift_sos), so the exact Delaunay
 // triangulation has no flat tets (see orient4).
 #pragma once
@@ -38,15 +40,21 @@ struct Geo {
   // of the regular triangulation), and a star may die (star.hpp: every facet beyond).
   // Only the star splaying engine reads it; gFlip3D's tests (insphere) ignore it.
   const double* w = nullptr;
-  // Every finite point (and weight) is a point of the integer stage
+  // Every finite point (and weight) is a point of the integer stage at scale 1
   // (geom::integer_point; all_integer_points below): exact evaluations over finite
   // points then never touch the scratch.
   bool int_points = false;
+  // Every point, ∞'s kernel point K included, is a point of the integer stage at the
+  // quarter scale (integer input within 2^21, K the centroid of four of its points):
+  // no exact evaluation touches the scratch.
+  bool int_all = false;
 
   GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
-  // Whether an exact form may go on with work = nullptr (see the top of this file).
+  // Whether an exact form may go on with work = nullptr (see the top of this file): over
+  // finite points only, and over any points.
+  GDEL_HD bool finite_scratch_free() const { return int_points || int_all; }
   GDEL_HD bool scratch_free(vid_t a, vid_t b, vid_t c, vid_t d, vid_t e = 0) const {
-    return int_points && a != inf && b != inf && c != inf && d != inf && e != inf;
+    return int_all || (int_points && a != inf && b != inf && c != inf && d != inf && e != inf);
   }
 
   // orient3d(a,b,c,d) > 0 iff (a,b,c,d) is positively oriented.
@@ -98,7 +106,7 @@ struct Geo {
   template <bool Exact>
   GDEL_HD int orient4(const vid_t* v, double* work) const {
     if constexpr (Exact) {  // (with ∞ the test is over the four finite points)
-      if (!work && !int_points) return par::kUndecided;
+      if (!work && !finite_scratch_free()) return par::kUndecided;
     }
     int j = -1;
     for (int i = 0; i < 5; ++i)
@@ -147,7 +155,7 @@ struct Geo {
     int j = inf_slot(t, inf);
     if (j >= 0) return orient<Exact>(t[face_vertex(j, 0)], t[face_vertex(j, 1)], t[face_vertex(j, 2)], e, work);
     if constexpr (Exact) {
-      if (!work && !int_points) return par::kUndecided;
+      if (!work && !finite_scratch_free()) return par::kUndecided;
       return geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]], sid[t[2]],
                                      sid[t[3]], sid[e], work);
     } else {
@@ -158,14 +166,16 @@ struct Geo {
 };
 
 // Whether every point of xyz[0, n) (and weight of w, when not nullptr) is a point of the
-// integer stage: Geo::int_points. GDEL_EXACT_TIERS=0 says no (for measurements: the
-// undecided items then all go to the scratch threads). Synchronizes.
+// integer stage at `scale` (geom::integer_point): Geo::int_points (scale 1), and with
+// the kernel point Geo::int_all (geom::kQuarterScale). GDEL_EXACT_TIERS=0 says no (for
+// measurements: every exact evaluation then has its scratch, as before). Synchronizes.
 template <class B>
-bool all_integer_points(par::Context<B>& ctx, const double* xyz, const double* w, std::int64_t n) {
+bool all_integer_points(par::Context<B>& ctx, const double* xyz, const double* w, std::int64_t n,
+                        double scale = 1.0) {
   if (const char* e = std::getenv("GDEL_EXACT_TIERS"); e && std::string(e) == "0") return false;
   if (n <= 0) return false;
   const std::int64_t off = par::count_indices(ctx, static_cast<std::size_t>(n), [=] GDEL_LAMBDA(std::int64_t i) {
-    return !geom::integer_point(xyz + 3 * i, w ? w[i] : 0.0);
+    return !geom::integer_point(xyz + 3 * i, w ? w[i] : 0.0, scale);
   });
   return off == 0;
 }

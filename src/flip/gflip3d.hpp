@@ -81,12 +81,12 @@ struct FlipConfig {
 };
 
 // The fast/exact split of the parallel layer with the predicates' scratch size. exact
-// returns whether it decided; with g.int_points the undecided items are first tried
-// without a scratch at full occupancy (par::fast_then_exact_tiered, Geo::int_points).
+// returns whether it decided; on integer input (Geo::int_points / int_all) the undecided items are first tried
+// without a scratch (par::fast_then_exact_tiered, Geo::int_points).
 template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, const Geo& g, std::int64_t n, std::int8_t* undecided, Fast fast,
                              Exact exact) {
-  return par::fast_then_exact_tiered(ctx, n, undecided, fast, exact, geom::kPredicateWork, g.int_points);
+  return par::fast_then_exact_tiered(ctx, n, undecided, fast, exact, geom::kPredicateWork, g.finite_scratch_free());
 }
 
 template <class B>
@@ -99,6 +99,7 @@ class GFlip3D {
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
         active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {
     int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
+    quarter_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_, geom::kQuarterScale);
   }
 
   // Debug aid: GDEL_CHECK_MESH=1 runs the structural invariant checker after every
@@ -270,7 +271,7 @@ class GFlip3D {
     log_.release();
   }
   vid_t infinite() const { return static_cast<vid_t>(n_); }
-  Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_}; }
+  Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_, int_all_}; }
 
   // --- a given initial structure (src/grid/initial.hpp, Options::initial = grid) ---------
   // Instead of init()'s first tetrahedron: a valid triangulation of some of the points
@@ -291,6 +292,7 @@ class GFlip3D {
     grow_aux();
     vert_tet_ = std::move(vert_tet);
     todo_ = std::move(todo);
+    update_int_all();  // (the caller stored K)
   }
 
  // (The steps below are public only because nvcc's extended __host__ __device__ lambdas
@@ -484,7 +486,7 @@ class GFlip3D {
     tid_t* vt = vert_tet_.data();
     Geo gk = geo();
     gk.inf = -1;  // K as a genuine point for the cone test
-    gk.int_points = false;  // (K is not integral, and ∞ no longer marks it)
+    gk.int_points = false;  // (∞ no longer marks K: only int_all says whether K is of the stage)
     const vid_t K = inf;
     const vid_t o0 = t0[0], o1 = t0[1], o2 = t0[2], o3 = t0[3];
     auto locate = [=] GDEL_LAMBDA(std::int64_t q, double* work, bool exact) -> bool {
@@ -557,6 +559,13 @@ class GFlip3D {
     return r == INT64_MAX ? -1 : r;
   }
 
+  // Geo::int_all: every point and the kernel point K (slot n) at the quarter scale. K, the
+  // centroid of four integer points, is a multiple of 1/4 (the sums are exact).
+  void update_int_all() {
+    const std::vector<double> k = host_point(n_);
+    int_all_ = quarter_points_ && geom::integer_point(k.data(), 0.0, geom::kQuarterScale);
+  }
+
   // K = a point strictly inside t0 (checked exactly); stored as point n.
   void set_kernel_point(const vid_t t[4]) {
     std::vector<std::vector<double>> p;
@@ -575,6 +584,7 @@ class GFlip3D {
         xyz_.set(static_cast<std::size_t>(3 * n_), k[0]);
         xyz_.set(static_cast<std::size_t>(3 * n_ + 1), k[1]);
         xyz_.set(static_cast<std::size_t>(3 * n_ + 2), k[2]);
+        update_int_all();
         return;
       }
     }
@@ -1397,7 +1407,9 @@ class GFlip3D {
   Buffer<double, B>& xyz_;
   Buffer<std::int64_t, B>& sid_;
   std::int64_t n_;
-  bool int_points_ = false;  // Geo::int_points: every point is a point of the integer stage
+  bool int_points_ = false;      // Geo::int_points: every point is a point of the integer stage
+  bool quarter_points_ = false;  // ... at the quarter scale
+  bool int_all_ = false;         // Geo::int_all: those and the kernel point K (update_int_all)
   FlipConfig cfg_;
   Stats& st_;
   mesh::TetMesh<B> mesh_;

@@ -164,10 +164,20 @@ GDEL_HD int det_ones_exact(const LiftedRows& R, const int* rows, const int* cols
 // difference at most 2^49. With D the K x K matrix of differences to the last row
 // (det[[q_i, 1]] = det D), only the last column can be h, and the permanent of D bounds
 // every partial sum of the Laplace expansion along that column: for K = 4 it is at most
-// 4 * 2^49 * 3! * (2^24)^3 < 2^127 - 1, for K <= 3 far less. No floating-point operation
-// is involved (so no contraction concern), and the bounds hold on host and device alike.
+// 4 * 2^49 * 3! * (2^24)^3 < 2^127 - 1, for K <= 3 far less. No rounded floating-point
+// operation is involved (so no contraction concern; the scale below is an exact product),
+// and the bounds hold on host and device alike.
+//
+// Quarters: when some entry is not such an integer, the stage tries the entries times 4
+// (weights times 16) under the same condition, i.e. multiples of 1/4 with |x| <= 2^21.
+// The products are exact (a power of two), and det[[q_i, 1]] is multiplied by a positive
+// constant (4 per coordinate column, 16 for the height column: h scales by 16), so its
+// sign is unchanged. This takes in the centroid of four integer points: gFlip3D's kernel
+// point K of ∞ (flip::Geo::int_all), so that on integer input every exact evaluation,
+// ∞'s included, is integer arithmetic.
 inline constexpr double kIntCoordMax = 0x1p23;
 inline constexpr double kIntWeightMax = 0x1p46;
+inline constexpr double kIntQuarter = 4.0;  // the second scale tried
 using i128 = __int128;
 
 // x as v when x is an integer with |x| <= max (false for NaN, infinities, fractions).
@@ -177,26 +187,38 @@ GDEL_HD GDEL_FORCEINLINE bool small_integer(double x, double max, std::int64_t& 
   return static_cast<double>(v) == x;
 }
 
-// Sign of det[[q_rows[i], 1]] over the columns cols[0..K) into `sign`, when the integer
-// stage applies (see above); false otherwise (nothing evaluated).
+// The entries of det[[q_rows[i], 1]] over the columns cols[0..K), times `scale` (weights
+// times scale^2), into q when they are all integers in the stage's range; false otherwise.
 template <int K>
-GDEL_HD bool det_ones_int(const LiftedRows& R, const int* rows, const int* cols, int& sign) {
-  std::int64_t q[K + 1][K];
+GDEL_HD bool int_entries(const LiftedRows& R, const int* rows, const int* cols, double scale,
+                         std::int64_t (&q)[K + 1][K]) {
+  const double wscale = fp::mul(scale, scale);
   for (int i = 0; i <= K; ++i) {
     const double* p = R.p[rows[i]];
     for (int j = 0; j < K; ++j) {
       const int c = cols[j];
       if (c != 3) {
-        if (!small_integer(p[c], kIntCoordMax, q[i][j])) return false;
+        if (!small_integer(fp::mul(p[c], scale), kIntCoordMax, q[i][j])) return false;
       } else {
         std::int64_t x, y, z, w;
-        if (!small_integer(p[0], kIntCoordMax, x) || !small_integer(p[1], kIntCoordMax, y) ||
-            !small_integer(p[2], kIntCoordMax, z) || !small_integer(R.w[rows[i]], kIntWeightMax, w))
+        if (!small_integer(fp::mul(p[0], scale), kIntCoordMax, x) ||
+            !small_integer(fp::mul(p[1], scale), kIntCoordMax, y) ||
+            !small_integer(fp::mul(p[2], scale), kIntCoordMax, z) ||
+            !small_integer(fp::mul(R.w[rows[i]], wscale), kIntWeightMax, w))
           return false;
         q[i][j] = x * x + y * y + z * z - w;
       }
     }
   }
+  return true;
+}
+
+// Sign of det[[q_rows[i], 1]] over the columns cols[0..K) into `sign`, when the integer
+// stage applies (see above: integers, else quarters); false otherwise (nothing evaluated).
+template <int K>
+GDEL_HD bool det_ones_int(const LiftedRows& R, const int* rows, const int* cols, int& sign) {
+  std::int64_t q[K + 1][K];
+  if (!int_entries<K>(R, rows, cols, 1.0, q) && !int_entries<K>(R, rows, cols, kIntQuarter, q)) return false;
   i128 d[K][K];
   for (int i = 0; i < K; ++i)
     for (int j = 0; j < K; ++j) d[i][j] = i128(q[i][j] - q[K][j]);

@@ -290,16 +290,21 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
 // Points of the integer stage
 // ---------------------------------------------------------------------------------------
 
-// True when every coordinate of p is an integer with |x| <= 2^23 and w (the point's weight,
-// 0 when unweighted) an integer with |w| <= 2^46: the integer stage's condition
-// (minors.hpp). Every exact evaluation over such points only (each predicate here, every
-// SoS minor of theirs) is then done in 128-bit integers and never touches the work buffer,
-// so callers may pass work = nullptr for them (flip::Geo's exact forms do, with
-// Geo::int_points).
-GDEL_HD inline bool integer_point(const double* p, double w = 0.0) {
+// True when every coordinate of p times `scale` is an integer with |x| <= 2^23 and w (the
+// point's weight, 0 when unweighted) times scale^2 an integer with |w| <= 2^46: the integer
+// stage's condition (minors.hpp) at scale 1 (integers) or kQuarterScale (multiples of 1/4).
+// When every point of a set passes at one of the two scales, every exact evaluation over
+// points of that set only (each predicate here, every SoS minor of theirs) is done in
+// 128-bit integers and never touches the work buffer, so callers may pass work = nullptr
+// for them (flip::Geo's exact forms do, with Geo::int_points / Geo::int_all).
+inline constexpr double kQuarterScale = detail::kIntQuarter;
+GDEL_HD inline bool integer_point(const double* p, double w = 0.0, double scale = 1.0) {
   std::int64_t v;
-  return detail::small_integer(p[0], detail::kIntCoordMax, v) && detail::small_integer(p[1], detail::kIntCoordMax, v) &&
-         detail::small_integer(p[2], detail::kIntCoordMax, v) && detail::small_integer(w, detail::kIntWeightMax, v);
+  const double ws = fp::mul(scale, scale);
+  return detail::small_integer(fp::mul(p[0], scale), detail::kIntCoordMax, v) &&
+         detail::small_integer(fp::mul(p[1], scale), detail::kIntCoordMax, v) &&
+         detail::small_integer(fp::mul(p[2], scale), detail::kIntCoordMax, v) &&
+         detail::small_integer(fp::mul(w, ws), detail::kIntWeightMax, v);
 }
 
 // ---------------------------------------------------------------------------------------

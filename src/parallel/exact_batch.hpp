@@ -7,8 +7,8 @@
 //   pass 2 (only those): exact(i, work) with `work` a private scratch of
 //          work_doubles doubles for expansion arithmetic.
 // fast_then_exact_tiered(..., tiered): exact returns bool (false: not decided). With
-// `tiered`, between the two passes every undecided item is first tried at full
-// occupancy with work = nullptr; exact answers false where it needs the scratch
+// `tiered`, between the two passes every undecided item is first tried with
+// work = nullptr (no scratch: see exact_threads for how many threads); exact answers false where it needs the scratch
 // (flip::Geo on integer input: its evaluations over finite points run in the integer
 // stage and never touch it), and only those items go on to pass 2's scratch threads.
 // two_stage_signs is the same for a sign per item.
@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "parallel/primitives.hpp"
@@ -31,44 +32,59 @@ inline constexpr std::int8_t kUndecided = 2;
 // most 32 MiB of int64 list (fast_then_exact; gFlip3D's proposer list).
 inline constexpr std::int64_t kUncountedListMax = std::int64_t(1) << 22;
 
-// Runs f(k, work) for k in [0, n) with a private scratch of work_doubles doubles.
+// Runs f(k, work) for k in [0, n) with a private scratch of work_doubles doubles; with
+// scratch_free (the caller knows that f never touches it: flip::Geo::int_all) with
+// work = nullptr instead (no scratch allocated).
 template <class F>
-void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f) {
+void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false) {
   if (n <= 0) return;
 #pragma omp parallel if (n >= 64)  // exact items are costly: a team pays off early
   {
-    std::vector<double> work(work_doubles);
+    std::vector<double> work(scratch_free ? 0 : work_doubles);
+    double* wp = scratch_free ? nullptr : work.data();
 #pragma omp for schedule(dynamic, 64)
-    for (std::int64_t k = 0; k < n; ++k) f(k, work.data());
+    for (std::int64_t k = 0; k < n; ++k) f(k, wp);
   }
 }
 
 #if defined(__CUDACC__)
 namespace detail {
+// work = nullptr when scratch is (the scratch-free form).
 template <class F>
 __global__ void scratch_kernel(std::int64_t n, double* scratch, std::size_t work_doubles, F f) {
   const std::int64_t tid = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x;
   const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
-  double* work = scratch + tid * work_doubles;
+  double* work = scratch ? scratch + tid * work_doubles : nullptr;
   for (std::int64_t k = tid; k < n; k += stride) f(k, work);
+}
+inline std::int64_t env_per_sm(const char* name, std::int64_t dflt) {
+  const char* e = std::getenv(name);
+  const long long v = e ? std::atoll(e) : 0;
+  return v > 0 ? v : dflt;
 }
 }  // namespace detail
 
 // Threads for exact passes: enough to keep the SMs busy with divergent, memory-
-// heavy work, few enough that the scratch stays small (slices of work_doubles).
-inline std::int64_t exact_threads(const Context<Cuda>& c, std::int64_t n) {
-  std::int64_t cap = std::int64_t(c.sm_count()) * 128;
+// heavy work, few enough that the scratch stays small (slices of work_doubles), and
+// the threads' stack frames (the exact code's local arrays) stay in cache. Per SM:
+// 128 with a scratch, GDEL_EXACT_PER_SM for measurements; without one (scratch_free)
+// GDEL_FREE_PER_SM, the same 128 by default (bench/RESULTS.md, session 18: at full
+// occupancy the same exact code ran slower).
+inline std::int64_t exact_threads(const Context<Cuda>& c, std::int64_t n, bool scratch_free = false) {
+  static const std::int64_t with = detail::env_per_sm("GDEL_EXACT_PER_SM", 128);
+  static const std::int64_t without = detail::env_per_sm("GDEL_FREE_PER_SM", 128);
+  const std::int64_t cap = std::int64_t(c.sm_count()) * (scratch_free ? without : with);
   return n < cap ? n : cap;
 }
 
 template <class F>
-void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f) {
+void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false) {
   if (n <= 0) return;
   const int block = 64;
-  std::int64_t threads = (exact_threads(c, n) + block - 1) / block * block;
-  Buffer<double, Cuda> scratch(c, static_cast<std::size_t>(threads) * work_doubles);
-  detail::scratch_kernel<<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(n, scratch.data(),
-                                                                                          work_doubles, f);
+  std::int64_t threads = (exact_threads(c, n, scratch_free) + block - 1) / block * block;
+  Buffer<double, Cuda> scratch(c, scratch_free ? 0 : static_cast<std::size_t>(threads) * work_doubles);
+  detail::scratch_kernel<<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(
+      n, scratch_free ? nullptr : scratch.data(), work_doubles, f);
   GDEL_CUDA_CHECK_LAUNCH("for_each_with_scratch");
 }
 #endif
@@ -98,9 +114,11 @@ std::int64_t fast_then_exact_impl(Context<B>& ctx, std::int64_t n, std::int8_t* 
   std::int64_t left = m;
   if constexpr (Tiers) {  // (exact's return type is not asked for: nvcc's device lambdas hide it from host code)
     if (tiered) {
-      parallel_for(ctx, m, [=] GDEL_LAMBDA(std::int64_t k) {
-        if (exact(lp[k], nullptr)) lp[k] = -1;
-      });
+      for_each_with_scratch(
+          ctx, m, 0, [=] GDEL_LAMBDA(std::int64_t k, double* work) {
+            if (exact(lp[k], work)) lp[k] = -1;
+          },
+          /*scratch_free=*/true);
       Buffer<std::int64_t, B> rest(ctx, static_cast<std::size_t>(m));
       left = static_cast<std::int64_t>(
           copy_if(ctx, lp, rest.data(), static_cast<std::size_t>(m), [=] GDEL_LAMBDA(std::int64_t i) { return i >= 0; }));
@@ -123,7 +141,7 @@ std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undec
   return detail::fast_then_exact_impl<false>(ctx, n, undecided, fast, exact, work_doubles, false);
 }
 // The same with exact(i, work) returning whether it decided item i; with `tiered` the
-// undecided items are first tried with work = nullptr at full occupancy, and only
+// undecided items are first tried with work = nullptr, and only
 // those it leaves go to the scratch threads (see the top of this file).
 template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact_tiered(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,

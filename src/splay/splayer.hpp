@@ -416,7 +416,7 @@ class Splayer {
       ffp[j] = seeded_build(g, sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s], gvp[j], lp + a, ov + a, b - a,
                             sdp[j], work, gp, gk, rmp[j + 1], ep, sv.killer + s, sv.count + s, ff_cap);
       up[j] = gk - rmp[j];
-    });
+    }, g.int_all);
     if (!huge.empty()) run_host_jobs(hjobs, gp, up, ffp, ff_cap);  // while the kernel runs; then writes back
     throw_if_error("building stars");
     if constexpr (Seed::enabled) {
@@ -786,7 +786,7 @@ class Splayer {
             if (star_side(g, T[i], sv.vert[s], x, work) > 0) ++c;
           }
       bp[s] = c;
-    });
+    }, g.int_all);
     return par::reduce_sum(ctx_, bp, static_cast<std::size_t>(nst_));
   }
 
@@ -920,7 +920,7 @@ class Splayer {
         }
       sv.count[s] = count;
       up[j] = k - rmp[j];
-    });
+    }, g.int_all);
     if (!ijobs.empty()) run_insert_jobs(ijobs, gp, up);  // while the kernel runs; then writes back
     throw_if_error("insertion");
     gone = pack_pairs(gp, rmp, up, static_cast<I64>(nh));
@@ -950,7 +950,7 @@ class Splayer {
       }
       sv.cert[5 * s] = k;
       for (int c = 0; c < 4; ++c) sv.cert[5 * s + 1 + c] = out[c];
-    });
+    }, g.int_all);
     throw_if_error("death certificate");
     ss_.dead += par::reduce_sum(ctx_, fp, static_cast<std::size_t>(nst_));
   }
@@ -1053,7 +1053,7 @@ class Splayer {
         pp[4 * i + k] = out[k];
         np[4 * i + k] = (v == inf || out[k] == inf) ? ~U64(0) : pair_key(v, out[k]);
       }
-    });
+    }, g.int_all);
     throw_if_error("confinement proof");
     // proofs of ∞: keep (s -> proof) sorted by s
     Buffer<I64, B> idx(ctx_, static_cast<std::size_t>(n));

@@ -69,7 +69,11 @@ void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid
   }();
   st.working_set_pairs = static_cast<I64>(ws.ids.size());
   t0 = std::chrono::steady_clock::now();
-  const flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m), weights};
+  // integer input: exact evaluations without a scratch (flip::Geo::int_points / int_all;
+  // slot m holds the kernel point, weights[m] its weight)
+  const bool int_points = flip::all_integer_points(ctx, P.data(), weights, m);
+  const bool int_all = flip::all_integer_points(ctx, P.data(), weights, m + 1, geom::kQuarterScale);
+  const flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m), weights, int_points, int_all};
   StarStage<B> stage(ctx, g, m);
   stage.splay(ws.offsets.data(), ws.ids.data());
   ctx.synchronize();

@@ -96,6 +96,28 @@ inline void gdel3d_host_star_case(Backend b) {
   }
 }
 
+// Integer input: the exact evaluations without a scratch (flip::Geo::int_points /
+// int_all: the tiered fast/exact pass of gFlip3D, and the star splaying engine without
+// a scratch) give the same triangulation as every evaluation with its scratch
+// (GDEL_EXACT_TIERS=0), exactly Delaunay. Grid (ties) and sphere (all cospherical).
+inline void gdel3d_exact_tiers_case(Backend b) {
+  for (auto d : {gen::Distribution::Grid, gen::Distribution::Sphere}) {
+    SCOPED_TRACE(std::string(gen::to_string(d)));
+    auto pts = gen::generate(d, d == gen::Distribution::Grid ? 100000 : 10000, 37);
+    Options o;
+    o.backend = b;
+    o.cpu_rounds = true;  // the rounds and the repair, also on the CPU
+    ::setenv("GDEL_EXACT_TIERS", "0", 1);
+    const Triangulation off = delaunay(pts, o);
+    ::unsetenv("GDEL_EXACT_TIERS");
+    const Triangulation on = delaunay(pts, o);
+    EXPECT_GT(on.stats.repair_failed_vertices, 0);  // the repair ran
+    expect_exact_delaunay(pts, on, b);
+    EXPECT_EQ(on.tets, off.tets);
+    EXPECT_EQ(on.neighbors, off.neighbors);
+  }
+}
+
 // One point per round (the CPU backend's default, flip/sequential.hpp) on several
 // threads: each insertion is a transaction that is undone and deferred when it meets
 // another thread's tets. Forced here with 4 threads, every round of over 64 points run

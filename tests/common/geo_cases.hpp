@@ -4,10 +4,11 @@
 // tests/cpu/gflip3d.cpp (Cpu) and tests/gpu/gflip3d.cu (Cuda).
 //
 // Checked: on lattice points (most tests exact ties) an exact form given no scratch
-// answers exactly what it answers with one, unless ∞'s kernel point (not integral) takes
-// part, where it answers kUndecided; without Geo::int_points it always answers
-// kUndecided; all_integer_points' condition; and that the tiered pass decides every item
-// as the plain exact pass does, the scratch-free items in its first tier.
+// answers exactly what it answers with one, unless ∞'s kernel point takes part without
+// Geo::int_all, where it answers kUndecided; without either flag it always answers
+// kUndecided; all_integer_points' condition at both scales; that the tiered pass decides
+// every item as the plain exact pass does, the scratch-free items in its first tier; and
+// (Geo::int_all) that for_each_with_scratch without a scratch gives the same signs.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -48,25 +49,29 @@ std::vector<std::int8_t> geo_tuple_signs(par::Context<B>& ctx, const flip::Geo& 
   return r.to_host();
 }
 
+// unit = 2^21: the lattice reaches 2^23, points of the stage at scale 1 only, and the
+// kernel point (a quarter) is not of the stage: Geo::int_points. unit = 2^19: everything
+// within 2^21, the kernel point included at the quarter scale: Geo::int_all.
 template <class B>
-void geo_scratch_free_cases() {
+void geo_scratch_free_cases(double unit) {
   using namespace gdel::par;
   using flip::Geo;
   Context<B> ctx;
   std::mt19937_64 rng(2026);
-  // n lattice points: {0..3}^3 scaled by 2^21 (coordinates up to 3 * 2^21 < 2^23) and
-  // moved by 2^21: nearly every insphere / orient4 test among them is an exact tie.
-  // Slot n is ∞'s kernel point, not integral (as in gFlip3D).
+  const bool all = unit < 0x1p20;
+  // n lattice points: {0..3}^3 scaled by unit and moved by unit: nearly every insphere /
+  // orient4 test among them is an exact tie. Slot n is ∞'s kernel point, a multiple of
+  // 1/4 (as gFlip3D's centroid of four integer points).
   const int n = 64;
   std::vector<double> xyz(3 * (n + 1));
   for (int i = 0; i < n; ++i) {
-    xyz[3 * i + 0] = (i % 4) * 0x1p21 + 0x1p21;
-    xyz[3 * i + 1] = ((i / 4) % 4) * 0x1p21 - 0x1p21;
-    xyz[3 * i + 2] = (i / 16) * 0x1p21;
+    xyz[3 * i + 0] = (i % 4) * unit + unit;
+    xyz[3 * i + 1] = ((i / 4) % 4) * unit - unit;
+    xyz[3 * i + 2] = (i / 16) * unit;
   }
-  xyz[3 * n + 0] = 1.5 * 0x1p21 + 0.25;
-  xyz[3 * n + 1] = 0.5 * 0x1p21 + 0.25;
-  xyz[3 * n + 2] = 1.5 * 0x1p21 + 0.25;
+  xyz[3 * n + 0] = 1.5 * unit + 0.25;
+  xyz[3 * n + 1] = 0.5 * unit + 0.25;
+  xyz[3 * n + 2] = 1.5 * unit + 0.75;
   std::vector<std::int64_t> sid(n + 1);
   for (int i = 0; i <= n; ++i) sid[i] = (i * 37) % (n + 1);  // a permutation: distinct SoS indices
   Buffer<double, B> P(ctx);
@@ -74,8 +79,11 @@ void geo_scratch_free_cases() {
   Buffer<std::int64_t, B> S(ctx);
   S.assign(sid);
 
-  // all_integer_points: true here; false with a fraction, past 2^23, or a weight past 2^46
+  // all_integer_points: true here; false with a fraction, past 2^23, or a weight past 2^46;
+  // at the quarter scale with the kernel point (n + 1 points) only within 2^21
   ASSERT_TRUE(flip::all_integer_points(ctx, P.data(), nullptr, n));
+  EXPECT_FALSE(flip::all_integer_points(ctx, P.data(), nullptr, n + 1));  // the kernel point at scale 1
+  EXPECT_EQ(flip::all_integer_points(ctx, P.data(), nullptr, n + 1, geom::kQuarterScale), all);
   for (double bad : {0.5, 0x1p23 + 1.0, -0x1p23 - 1.0}) {
     std::vector<double> q = xyz;
     q[3 * 17 + 1] = bad;
@@ -111,8 +119,8 @@ void geo_scratch_free_cases() {
   Buffer<vid_t, B> U(ctx);
   U.assign(tup);
   const vid_t* up = U.data();
-  const Geo gi{P.data(), S.data(), static_cast<vid_t>(n), nullptr, true};
-  const Geo gp{P.data(), S.data(), static_cast<vid_t>(n), nullptr, false};
+  const Geo gi{P.data(), S.data(), static_cast<vid_t>(n), nullptr, !all, all};
+  const Geo gp{P.data(), S.data(), static_cast<vid_t>(n), nullptr, false, false};
   const std::vector<std::int8_t> exact = geo_tuple_signs(ctx, gp, up, T, true);
   const std::vector<std::int8_t> free_int = geo_tuple_signs(ctx, gi, up, T, false);
   const std::vector<std::int8_t> free_plain = geo_tuple_signs(ctx, gp, up, T, false);
@@ -124,9 +132,9 @@ void geo_scratch_free_cases() {
       if (ex == kUndecided) ++mismatches;  // with a scratch: always decided
       if (fp != kUndecided) ++mismatches;  // without Geo::int_points: never without a scratch
       // ∞ among a test's points (v[0]): a plain orient3d with ∞ reads the kernel point
-      // (not integral) and is refused without a scratch. orient4 and insphere with ∞
-      // reduce to an orient3d of four finite points, and the volume sign reads v[1..4].
-      if (has_inf && k == kOrient) {
+      // and is refused without a scratch unless Geo::int_all. orient4 and insphere with
+      // ∞ reduce to an orient3d of four finite points, and the volume sign reads v[1..4].
+      if (has_inf && k == kOrient && !all) {
         inf_refused += fi == kUndecided;
         if (fi != kUndecided) ++mismatches;
       } else {
@@ -144,7 +152,7 @@ void geo_scratch_free_cases() {
   std::printf("[geo scratch-free] %d tuples: %ld tests decided without a scratch (%ld insphere tests left by the filter), %ld with ∞ refused\n",
               T, decided, ties, inf_refused);
   EXPECT_EQ(mismatches, 0);
-  EXPECT_EQ(inf_refused, T / 8);
+  EXPECT_EQ(inf_refused, all ? 0 : T / 8);
   EXPECT_GT(ties, T / 20);
 
   // The tiered pass: every item undecided by "fast", then exact with a scratch for the
@@ -173,10 +181,21 @@ void geo_scratch_free_cases() {
     long first = 0;
     for (int t = 0; t < T; ++t) {
       first += th[t] == 1;
-      EXPECT_EQ(th[t], (tiered && t % 8 != 0) ? 1 : 2) << t;
+      EXPECT_EQ(th[t], (tiered && (all || t % 8 != 0)) ? 1 : 2) << t;
       for (int k = 0; k < kTests; ++k) EXPECT_EQ(rh[kTests * t + k], exact[kTests * t + k]) << t << " " << k;
     }
     std::printf("[tiered pass] tiered=%d: %ld of %d items decided without a scratch\n", int(tiered), first, T);
+  }
+  // Geo::int_all: for_each_with_scratch without a scratch (the star splaying engine's
+  // kernels on integer input) gives the signs of the plain exact pass
+  if (all) {
+    Buffer<std::int8_t, B> r(ctx, static_cast<std::size_t>(kTests * T));
+    std::int8_t* rp = r.data();
+    for_each_with_scratch(
+        ctx, T, geom::kPredicateWork,
+        [=] GDEL_LAMBDA(std::int64_t t, double* work) { geo_exact_signs(gi, up + 5 * t, work, rp + kTests * t); },
+        /*scratch_free=*/true);
+    EXPECT_EQ(r.to_host(), exact);
   }
 }
 

@@ -18,3 +18,4 @@ TEST(GDel3DCpu, AllGeneratorsAtScale) { gdel::test::gdel3d_scale_cases(gdel::Bac
 TEST(GDel3DCpu, HostBuiltStarsSameResult) { gdel::test::gdel3d_host_star_case(gdel::Backend::Cpu); }
 TEST(GDel3DCpu, FlipFlopSameAsRebuild) { gdel::test::gdel3d_flipflop_case(gdel::Backend::Cpu); }
 TEST(GDel3DCpu, OnePointPerRoundOnThreads) { gdel::test::gdel3d_threads_case(gdel::Backend::Cpu); }
+TEST(GDel3DCpu, IntegerInputWithoutScratchSameResult) { gdel::test::gdel3d_exact_tiers_case(gdel::Backend::Cpu); }

@@ -10,4 +10,7 @@ TEST(GFlip3DCpu, NonoptimalRoundsUnderIndependentSplits) { gdel::test::nonoptima
 TEST(GFlip3DCpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cpu, 20000); }
 TEST(GFlip3DCpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cpu, 6000, "64"); }
 TEST(GFlip3DCpu, IndependentSplitsLeaveFewerStuckFacets) { gdel::test::gflip_independent_splits_cases(gdel::Backend::Cpu); }
-TEST(GFlip3DCpu, ExactFormsWithoutScratchAndTieredPass) { gdel::test::geo_scratch_free_cases<gdel::par::Cpu>(); }
+TEST(GFlip3DCpu, ExactFormsWithoutScratchAndTieredPass) {
+  gdel::test::geo_scratch_free_cases<gdel::par::Cpu>(0x1p21);  // Geo::int_points
+  gdel::test::geo_scratch_free_cases<gdel::par::Cpu>(0x1p19);  // Geo::int_all
+}

@@ -616,6 +616,7 @@ TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
   long taken = 0, refused = 0, zeros = 0;
   const auto coord_ok = [](double x) { return std::fabs(x) <= 0x1p23 && x == std::trunc(x); };
   const auto weight_ok = [](double w) { return std::fabs(w) <= 0x1p46 && w == std::trunc(w); };
+  long quarters = 0;  // taken at the quarter scale only
   for (long t = 0; t < 60000; ++t) {
     // the integer family; every fourth case another family (fractions, huge, tiny: refused)
     const Case k = g.degenerate(t % 4 ? 9 : static_cast<int>(t / 4));
@@ -625,13 +626,21 @@ TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
     for (unsigned mask = 1; mask < 16; ++mask) {
       int cols[4];
       const int kc = gdel::geom::detail::mask_columns(mask, cols);
-      bool expect = true;
-      for (int i = 0; i <= kc; ++i)
-        for (int j = 0; j < kc; ++j) {
-          if (cols[j] < 3) expect = expect && coord_ok(k.p[i][cols[j]]);
-          else
-            expect = expect && coord_ok(k.p[i][0]) && coord_ok(k.p[i][1]) && coord_ok(k.p[i][2]) && weight_ok(k.w[i]);
-        }
+      // the entries at scale 1, or all of them times 4 (weights times 16)
+      const auto entries_ok = [&](double sc) {
+        bool e = true;
+        for (int i = 0; i <= kc; ++i)
+          for (int j = 0; j < kc; ++j) {
+            if (cols[j] < 3) e = e && coord_ok(sc * k.p[i][cols[j]]);
+            else
+              e = e && coord_ok(sc * k.p[i][0]) && coord_ok(sc * k.p[i][1]) && coord_ok(sc * k.p[i][2]) &&
+                  weight_ok(sc * sc * k.w[i]);
+          }
+        return e;
+      };
+      const bool at1 = entries_ok(1.0), at4 = entries_ok(4.0);
+      const bool expect = at1 || at4;
+      quarters += !at1 && at4;
       int s = 7;
       bool ok = false;
       switch (kc) {
@@ -651,9 +660,11 @@ TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
       if (s != x) fail.add("integer stage sign, mask " + std::to_string(mask) + " " + describe(k, 5));
     }
   }
-  std::printf("[integer stage] %ld minors taken (%ld zero), %ld refused\n", taken, zeros, refused);
-  // all three outcomes occur, so the checks above have something to see
+  std::printf("[integer stage] %ld minors taken (%ld zero, %ld at the quarter scale), %ld refused\n", taken, zeros,
+              quarters, refused);
+  // all outcomes occur, so the checks above have something to see
   EXPECT_GT(taken, 100000);
+  EXPECT_GT(quarters, 10000);
   EXPECT_GT(zeros, 10000);
   EXPECT_GT(refused, 10000);
   fail.report("integer stage");

@@ -381,8 +381,10 @@ class Generator {
         }
         break;
       }
-      case 9: {  // integers at the integer stage's limits (minors.hpp): |x| <= 2^23, |w| <= 2^46, and just past
+      case 9: {  // integers at the integer stage's limits (minors.hpp): |x| <= 2^23, |w| <= 2^46, and just past;
+                 // then (one case in three) the same divided by 4 (weights by 16): its quarter scale
         const double X = 0x1p23, W = 0x1p46;
+        const bool quarter = integer(0, 2) == 0;
         switch (integer(0, 2)) {
           case 0: {  // cospherical lattice points, scaled and moved to large coordinates
             const auto& sph = sphere_points();  // radius sqrt(2925) < 55
@@ -419,6 +421,12 @@ class Generator {
               k.w[i] = sq - h;  // exact: integers below 2^53
             }
             break;
+          }
+        }
+        if (quarter) {  // exact: powers of two; the ties stay ties (every minor scales by a positive constant)
+          for (int i = 0; i < 5; ++i) {
+            for (int c = 0; c < 3; ++c) k.p[i][c] *= 0.25;
+            k.w[i] *= 0.0625;
           }
         }
         break;

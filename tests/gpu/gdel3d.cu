@@ -7,3 +7,4 @@ TEST(GDel3DGpu, Degenerate) { gdel::test::gdel3d_degenerate_cases(gdel::Backend:
 TEST(GDel3DGpu, AllGeneratorsAtScale) { gdel::test::gdel3d_scale_cases(gdel::Backend::Cuda, {10000, 100000, 1000000}); }
 TEST(GDel3DGpu, HostBuiltStarsSameResult) { gdel::test::gdel3d_host_star_case(gdel::Backend::Cuda); }
 TEST(GDel3DGpu, FlipFlopSameAsRebuild) { gdel::test::gdel3d_flipflop_case(gdel::Backend::Cuda); }
+TEST(GDel3DGpu, IntegerInputWithoutScratchSameResult) { gdel::test::gdel3d_exact_tiers_case(gdel::Backend::Cuda); }

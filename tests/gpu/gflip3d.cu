@@ -10,4 +10,7 @@ TEST(GFlip3DGpu, NonoptimalRoundsUnderIndependentSplits) { gdel::test::nonoptima
 TEST(GFlip3DGpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cuda, 200000); }
 TEST(GFlip3DGpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cuda, 20000, "256"); }
 TEST(GFlip3DGpu, IndependentSplitsLeaveFewerStuckFacets) { gdel::test::gflip_independent_splits_cases(gdel::Backend::Cuda); }
-TEST(GFlip3DGpu, ExactFormsWithoutScratchAndTieredPass) { gdel::test::geo_scratch_free_cases<gdel::par::Cuda>(); }
+TEST(GFlip3DGpu, ExactFormsWithoutScratchAndTieredPass) {
+  gdel::test::geo_scratch_free_cases<gdel::par::Cuda>(0x1p21);  // Geo::int_points
+  gdel::test::geo_scratch_free_cases<gdel::par::Cuda>(0x1p19);  // Geo::int_all
+}
