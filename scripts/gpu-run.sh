@@ -581,6 +581,29 @@ case "$plan" in
     bench s18b_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_PROFILE=1 bench s18b_prof 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s18c)  # session 18: tests of the quarter scale and scratch-free passes; thread counts of the exact passes
+          # (GDEL_FREE_PER_SM without a scratch, GDEL_EXACT_PER_SM with one) on grid and sphere; step profiles
+    step predicates 120 "$tbin/gpu_predicates"
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    for v in "GDEL_EXACT_TIERS=0" "GDEL_FREE_PER_SM=128" "GDEL_FREE_PER_SM=512" "GDEL_FREE_PER_SM=2048" \
+             "GDEL_EXACT_TIERS=0 GDEL_EXACT_PER_SM=256" "GDEL_FREE_PER_SM=64"; do
+      tag=$(echo "$v" | tr ' =' '__')
+      timeout 90 env $v "$gb" --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3 --json "$jdir/s18c_$tag.json" \
+        >"/tmp/s18c_$tag.log" 2>&1
+      echo "== s18c $v" | tee -a "$out/summary.txt"
+      grep -E '^(grid|sphere) ' "/tmp/s18c_$tag.log" | tee -a "$out/summary.txt"
+      cat "/tmp/s18c_$tag.log" >>"$out/log.txt"
+    done
+    bench s18c_uniform 60 --dist uniform --n 1000000,10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s18c_prof 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    step gstar4d 120 "$tbin/gpu_gstar4d"
+    step greg3d 120 "$tbin/gpu_greg3d"
+    # per-kernel counters of 60 launches in the middle of a uniform 10^6 run (the flip loop)
+    step ncu 150 ncu --clock-control none --launch-skip 2500 --launch-count 60 --section SpeedOfLight \
+      --section Occupancy --section LaunchStats --section MemoryWorkloadAnalysis \
+      "$gb" --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
