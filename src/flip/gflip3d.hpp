@@ -83,10 +83,13 @@ struct FlipConfig {
 // The fast/exact split of the parallel layer with the predicates' scratch size. exact
 // returns whether it decided; on integer input (Geo::int_points / int_all) the undecided items are first tried
 // without a scratch (par::fast_then_exact_tiered, Geo::int_points).
+// With `tally` (a counter in backend memory) the count of exact items goes there and the
+// host is not waited for (par::fast_then_exact).
 template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, const Geo& g, std::int64_t n, std::int8_t* undecided, Fast fast,
-                             Exact exact) {
-  return par::fast_then_exact_tiered(ctx, n, undecided, fast, exact, geom::kPredicateWork, g.finite_scratch_free());
+                             Exact exact, std::int64_t* tally = nullptr, std::int64_t max_threads = -1) {
+  return par::fast_then_exact_tiered(ctx, n, undecided, fast, exact, geom::kPredicateWork, g.finite_scratch_free(),
+                                     tally, max_threads);
 }
 
 template <class B>
@@ -97,7 +100,8 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx) {
+        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 4) {
+    counts_.memset(0);
     int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
     quarter_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_, geom::kQuarterScale);
   }
@@ -802,6 +806,27 @@ class GFlip3D {
       check_mesh("after flip iteration");
       if (with_log && static_cast<std::int64_t>(log_.size()) > log_cap) relocate_through_dag();
     }
+    st_.exact_evaluations += counts_.get(3);
+    counts_.set(3, 0);
+    tally_seen_ = 0;
+  }
+
+  // The flip iterations' exact passes count their items on the backend (no wait for the
+  // host) below this many points. Above it they wait: a pass's scratch is then sized by
+  // its count, not by the bound the host knows, which keeps the peak of the runs that
+  // count memory (10^8 points: 491 bytes per point) - and there a wait is little
+  // against an iteration's work.
+  static constexpr std::int64_t kDeferredExactMax = std::int64_t(1) << 24;
+  std::int64_t* exact_tally() { return n_ <= kDeferredExactMax ? counts_.data() + 3 : nullptr; }
+  // The scratch threads of those passes: twice the exact items of the iteration before
+  // (read with the counts), at least kMinScratchThreads; one block where no test needs
+  // the scratch (Geo::int_all: the scratch pass gets no items). Without the cap the
+  // scratch was sized by the active set: up to 132 x 128 threads (0.95 GB) where
+  // uniform input has a few hundred exact items an iteration.
+  static constexpr std::int64_t kMinScratchThreads = 1024;
+  std::int64_t scratch_threads() {
+    if (!exact_tally()) return -1;
+    return int_all_ ? 64 : std::max(kMinScratchThreads, 2 * exact_seen_);
   }
 
   // One parallel flipping iteration over the active set; false when nothing flipped.
@@ -824,7 +849,8 @@ class GFlip3D {
           if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
           pp[k] = p;
           return true;
-        });
+        },
+        exact_tally(), scratch_threads());
     par::mark(ctx_, "flip: propose");
     und.release();
     return commit_flips(A, na, prop, with_log) > 0;
@@ -854,37 +880,35 @@ class GFlip3D {
     // them propose, and a list sized by the active set was 54 bytes per point of the
     // run's peak (bench/RESULTS.md). Over a smaller one (par::kUncountedListMax) it is
     // sized by the set, which saves a pass and a wait on the count in most iterations.
-    Buffer<std::int32_t, B> pl(ctx_);
-    std::int64_t np;
-    if (na > par::kUncountedListMax) {
-      np = par::count_indices(ctx_, static_cast<std::size_t>(na), is_proposer);
-      if (np > 0) {
-        pl.resize(static_cast<std::size_t>(np));
-        par::select_indices(ctx_, static_cast<std::size_t>(na), pl.data(), is_proposer);
-      }
-    } else {
-      pl.resize(static_cast<std::size_t>(na));
-      np = static_cast<std::int64_t>(par::select_indices(ctx_, static_cast<std::size_t>(na), pl.data(), is_proposer));
-    }
-    if (np == 0) {
+    // Up to the host's one read of the counts below, each step is bounded by what the
+    // host knows (npb: the list's length) and cut by the counts on the backend (counts_):
+    // the proposers, the accepted flips and the 2-3 flips among them come to the host
+    // together, one wait instead of three (bench/RESULTS.md, session 19).
+    std::int64_t* cn = counts_.data();
+    const std::int64_t npb = na > par::kUncountedListMax
+                                 ? par::count_indices(ctx_, static_cast<std::size_t>(na), is_proposer)
+                                 : na;
+    if (npb == 0) {
       active_.release();
       return 0;
     }
+    Buffer<std::int32_t, B> pl(ctx_, static_cast<std::size_t>(npb));
     std::int32_t* plp = pl.data();
+    par::select_indices_to(ctx_, static_cast<std::size_t>(na), plp, cn, is_proposer);
     par::mark(ctx_, "flip: select proposers");
     // vote: the smallest proposer index wins each tet (atomic max of INT_MAX - index, so
     // that -1 is the empty vote); accepted flips are disjoint
     std::int32_t* vote = aux_pick_.data();
-    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) {
+    par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
       const std::int64_t k = plp[j];
       if (pp[k] < 0) return;  // stuck
       tid_t ts[3];
       int nt = prop_tets(m, A[k], pp[k], ts);
       for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], static_cast<std::int32_t>(INT_MAX - A[k]));
     });
-    Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(np));
+    Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(npb));
     std::int8_t* ap = acc.data();
-    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) {
+    par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
       const std::int64_t k = plp[j];
       tid_t ts[3];
       int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
@@ -892,19 +916,36 @@ class GFlip3D {
       for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == static_cast<std::int32_t>(INT_MAX - A[k]);
       ap[j] = ok ? 1 : 0;
     });
-    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) {
+    par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
       const std::int64_t k = plp[j];
       if (pp[k] < 0) return;
       tid_t ts[3];
       int nt = prop_tets(m, A[k], pp[k], ts);
       for (int l = 0; l < nt; ++l) vote[ts[l]] = -1;
     });
-    Buffer<std::int32_t, B> fl(ctx_, static_cast<std::size_t>(np));  // positions in A, as pl
+    Buffer<std::int32_t, B> fl(ctx_, static_cast<std::size_t>(npb));  // positions in pl, then in A
     std::int32_t* flp = fl.data();
-    // (not const: nvcc 13.0 crashes, "i_copy_expr_tree", on a const local whose
-    // initializer contains an extended lambda once it is used in a constant context)
-    std::int64_t nfl = static_cast<std::int64_t>(
-        par::select_indices(ctx_, static_cast<std::size_t>(np), flp, [=] GDEL_LAMBDA(std::int64_t j) { return ap[j] != 0; }));
+    par::select_indices_to(ctx_, static_cast<std::size_t>(npb), flp, cn + 1,
+                           [=] GDEL_LAMBDA(std::int64_t j) { return j < cn[0] && ap[j] != 0; });
+    // 2-3 flips: each needs one new slot (o23: their exclusive offsets; cn[2]: how many)
+    // (int32: at most np < 2^31 flips)
+    Buffer<std::int32_t, B> off23(ctx_, static_cast<std::size_t>(npb + 1));
+    std::int32_t* o23 = off23.data();
+    par::parallel_for(ctx_, npb + 1, [=] GDEL_LAMBDA(std::int64_t f) {
+      o23[f] = f < cn[1] && prop_type(pp[plp[flp[f]]]) == 1 ? 1 : 0;
+    });
+    par::exclusive_scan(ctx_, o23, o23, static_cast<std::size_t>(npb + 1));
+    par::parallel_for(ctx_, 1, [=] GDEL_LAMBDA(std::int64_t) { cn[2] = o23[cn[1]]; });
+    std::int64_t h[4];
+    par::detail::Memory<B>::to_host(ctx_, h, cn, sizeof(h));
+    const std::int64_t np = h[0];
+    std::int64_t nfl = h[1], n23 = h[2];
+    exact_seen_ = h[3] - tally_seen_;  // (the last records pass and this propose)
+    tally_seen_ = h[3];
+    if (np == 0) {
+      active_.release();
+      return 0;
+    }
     if (nfl == 0) {  // only stuck tets: they stay active
       Buffer<tid_t, B> act(ctx_, static_cast<std::size_t>(np));
       tid_t* acp = act.data();
@@ -916,10 +957,11 @@ class GFlip3D {
       const std::int64_t keep = cfg_.max_flips_per_iteration;
       par::parallel_for(ctx_, nfl - keep, [=] GDEL_LAMBDA(std::int64_t f) { ap[flp[keep + f]] = 0; });
       nfl = keep;
+      n23 = off23.get(static_cast<std::size_t>(keep));  // (the offsets before `keep` stand)
     }
     // flips' proposer positions in A
     par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) { flp[f] = plp[flp[f]]; });
-    par::mark(ctx_, "flip: vote + select accepted");
+    par::mark(ctx_, "flip: vote + select accepted + count 2-3");
     if (debug_) {  // accepted flips must touch disjoint, alive tets
       Buffer<tid_t, B> tt(ctx_, static_cast<std::size_t>(3 * nfl));
       tid_t* ttp = tt.data();
@@ -957,16 +999,11 @@ class GFlip3D {
         throw Error(msg);
       }
     }
-    // count 2-3 flips: each needs one new slot
-    Buffer<std::int64_t, B> off23(ctx_, static_cast<std::size_t>(nfl + 1));
-    std::int64_t* o23 = off23.data();
-    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) { o23[f] = prop_type(pp[flp[f]]) == 1 ? 1 : 0; });
-    const std::int64_t n23 = par::counts_to_offsets(ctx_, o23, static_cast<std::size_t>(nfl));
     st_.flips23 += n23;
     st_.flips32 += nfl - n23;
     const mesh::SlotSource src = claim(n23);
     m = mesh_.view();
-    par::mark(ctx_, "flip: count 2-3 + claim slots");
+    par::mark(ctx_, "flip: claim slots");
     // records; a log that this iteration's would take past its capacity is first
     // consumed (the points relocated through it: same result, one walk earlier)
     std::int64_t log0 = static_cast<std::int64_t>(log_.size());
@@ -992,7 +1029,8 @@ class GFlip3D {
     const BuildFlipRecord bfr{m, g, A, flp, pp, rec};
     st_.exact_evaluations += fast_then_exact(
         ctx_, g, nfl, und2.data(), [=] GDEL_LAMBDA(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
-        [=] GDEL_LAMBDA(std::int64_t f, double* work) { return bfr.template run<true>(f, work); });
+        [=] GDEL_LAMBDA(std::int64_t f, double* work) { return bfr.template run<true>(f, work); }, exact_tally(),
+        scratch_threads());
     par::mark(ctx_, "flip: records");
     prop.release();  // (the codes and the accepted list are the records' now)
     fl.release();
@@ -1422,6 +1460,12 @@ class GFlip3D {
   bool marks_dirty_ = false;  // aux_key_ holds flip stamps
   Buffer<FlipRec, B> log_;
   std::vector<std::int64_t> log_iters_{0};
+  // A flip iteration's counts on the backend, read by the host once (commit_flips):
+  // [0] proposers, [1] accepted flips, [2] 2-3 flips among them, [3] the exact
+  // evaluations of the flip loop (flushed into Stats at its end).
+  Buffer<std::int64_t, B> counts_;
+  std::int64_t tally_seen_ = 0;  // counts_[3] at the last read
+  std::int64_t exact_seen_ = 0;  // exact items between the last two reads
   double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0, t_reorder_ = 0;
   bool debug_ = false;
   bool sequential_ran_ = false;

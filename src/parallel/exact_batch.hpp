@@ -15,7 +15,8 @@
 // On the GPU pass 2 runs with a bounded number of threads, each owning a slice of a
 // global-memory scratch (exact expansions are far too long for registers), grid-
 // striding over the list; on the CPU each OpenMP thread uses a heap scratch.
-// Returns the number of items that needed the exact pass (synchronizes).
+// Returns the number of items that needed the exact pass (synchronizes), or adds it to a
+// counter on the backend without waiting (the `tally` forms).
 #pragma once
 
 #include <cstdint>
@@ -34,9 +35,14 @@ inline constexpr std::int64_t kUncountedListMax = std::int64_t(1) << 22;
 
 // Runs f(k, work) for k in [0, n) with a private scratch of work_doubles doubles; with
 // scratch_free (the caller knows that f never touches it: flip::Geo::int_all) with
-// work = nullptr instead (no scratch allocated).
+// work = nullptr instead (no scratch allocated). With `count` (backend memory, set by an
+// earlier call on the stream) only k < min(n, *count): n is then a bound. max_threads > 0
+// caps the threads (and so the scratch) on the CUDA backend, where they stride over the
+// items; the CPU backend's team is the cap there.
 template <class F>
-void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false) {
+void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false,
+                           const std::int64_t* count = nullptr, std::int64_t /*max_threads*/ = -1) {
+  if (count && *count < n) n = *count;
   if (n <= 0) return;
 #pragma omp parallel if (n >= 64)  // exact items are costly: a team pays off early
   {
@@ -51,7 +57,9 @@ void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubl
 namespace detail {
 // work = nullptr when scratch is (the scratch-free form).
 template <class F>
-__global__ void scratch_kernel(std::int64_t n, double* scratch, std::size_t work_doubles, F f) {
+__global__ void scratch_kernel(std::int64_t n, const std::int64_t* count, double* scratch, std::size_t work_doubles,
+                               F f) {
+  if (count && *count < n) n = *count;
   const std::int64_t tid = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x;
   const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
   double* work = scratch ? scratch + tid * work_doubles : nullptr;
@@ -65,88 +73,107 @@ inline std::int64_t env_per_sm(const char* name, std::int64_t dflt) {
 }  // namespace detail
 
 // Threads for exact passes: enough to keep the SMs busy with divergent, memory-
-// heavy work, few enough that the scratch stays small (slices of work_doubles), and
-// the threads' stack frames (the exact code's local arrays) stay in cache. Per SM:
-// 128 with a scratch, GDEL_EXACT_PER_SM for measurements; without one (scratch_free)
-// GDEL_FREE_PER_SM, the same 128 by default (bench/RESULTS.md, session 18: at full
-// occupancy the same exact code ran slower).
+// heavy work, few enough that the scratch stays small (slices of work_doubles). Per SM:
+// 128 with a scratch (0.95 GB on 132 SMs), GDEL_EXACT_PER_SM for measurements; without
+// one (scratch_free) as many as are resident, 2 048, GDEL_FREE_PER_SM for measurements
+// (bench/RESULTS.md, session 19: the sphere's exact passes and star builds −11 %
+// against 128; 64 was 13 % slower).
 inline std::int64_t exact_threads(const Context<Cuda>& c, std::int64_t n, bool scratch_free = false) {
   static const std::int64_t with = detail::env_per_sm("GDEL_EXACT_PER_SM", 128);
-  static const std::int64_t without = detail::env_per_sm("GDEL_FREE_PER_SM", 128);
+  static const std::int64_t without = detail::env_per_sm("GDEL_FREE_PER_SM", 2048);
   const std::int64_t cap = std::int64_t(c.sm_count()) * (scratch_free ? without : with);
   return n < cap ? n : cap;
 }
 
 template <class F>
-void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false) {
+void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false,
+                           const std::int64_t* count = nullptr, std::int64_t max_threads = -1) {
   if (n <= 0) return;
   const int block = 64;
-  std::int64_t threads = (exact_threads(c, n, scratch_free) + block - 1) / block * block;
+  std::int64_t want = exact_threads(c, n, scratch_free);
+  if (max_threads > 0 && max_threads < want) want = max_threads;
+  std::int64_t threads = (want + block - 1) / block * block;
   Buffer<double, Cuda> scratch(c, scratch_free ? 0 : static_cast<std::size_t>(threads) * work_doubles);
   detail::scratch_kernel<<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(
-      n, scratch_free ? nullptr : scratch.data(), work_doubles, f);
+      n, count, scratch_free ? nullptr : scratch.data(), work_doubles, f);
   GDEL_CUDA_CHECK_LAUNCH("for_each_with_scratch");
 }
 #endif
 
 namespace detail {
+// One path for both forms: the undecided items' list, its length on the backend (cnt[0]),
+// the passes bounded by what the host knows and cut by the backend's count, so that
+// nothing waits for the host before the exact passes are enqueued.
 template <bool Tiers, class B, class Fast, class Exact>
 std::int64_t fast_then_exact_impl(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
-                                  std::size_t work_doubles, bool tiered) {
+                                  std::size_t work_doubles, bool tiered, std::int64_t* tally,
+                                  std::int64_t max_threads) {
   if (n <= 0) return 0;
   parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
   auto und = [=] GDEL_LAMBDA(std::int64_t i) { return undecided[i] != 0; };
-  // Over many items the undecided ones (few) are counted first, so that the list is as
-  // long as they are, not n (see kUncountedListMax).
-  Buffer<std::int64_t, B> list(ctx);
-  std::int64_t m;
-  if (n > kUncountedListMax) {
-    m = count_indices(ctx, static_cast<std::size_t>(n), und);
-    if (m == 0) return 0;
-    list.resize(static_cast<std::size_t>(m));
-    select_indices(ctx, static_cast<std::size_t>(n), list.data(), und);
-  } else {
-    list.resize(static_cast<std::size_t>(n));
-    m = static_cast<std::int64_t>(select_indices(ctx, static_cast<std::size_t>(n), list.data(), und));
-    if (m == 0) return 0;
-  }
+  // Over many items the undecided ones (few) are counted first (a wait), so that the
+  // list is as long as they are, not n (see kUncountedListMax).
+  std::int64_t bound = n > kUncountedListMax ? count_indices(ctx, static_cast<std::size_t>(n), und) : n;
+  if (bound == 0) return 0;
+  Buffer<std::int64_t, B> cnt(ctx, 2);
+  std::int64_t* cp = cnt.data();
+  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(bound));
   std::int64_t* lp = list.data();
-  std::int64_t left = m;
+  select_indices_to(ctx, static_cast<std::size_t>(n), lp, cp, und);
+  // Without a tally the caller waits for the count anyway: wait here, so that the
+  // scratch is sized by the items, not by n (0.95 GB at n = 10^6: session 19's s19a).
+  if (!tally) {
+    bound = cnt.get(0);
+    if (bound == 0) return 0;
+  }
   if constexpr (Tiers) {  // (exact's return type is not asked for: nvcc's device lambdas hide it from host code)
     if (tiered) {
       for_each_with_scratch(
-          ctx, m, 0, [=] GDEL_LAMBDA(std::int64_t k, double* work) {
+          ctx, bound, 0, [=] GDEL_LAMBDA(std::int64_t k, double* work) {
             if (exact(lp[k], work)) lp[k] = -1;
           },
-          /*scratch_free=*/true);
-      Buffer<std::int64_t, B> rest(ctx, static_cast<std::size_t>(m));
-      left = static_cast<std::int64_t>(
-          copy_if(ctx, lp, rest.data(), static_cast<std::size_t>(m), [=] GDEL_LAMBDA(std::int64_t i) { return i >= 0; }));
-      list = std::move(rest);
-      lp = list.data();
+          /*scratch_free=*/true, cp);
+      Buffer<std::int64_t, B> rest(ctx, static_cast<std::size_t>(bound));
+      std::int64_t* rp = rest.data();
+      select_indices_to(ctx, static_cast<std::size_t>(bound), rp, cp + 1,
+                        [=] GDEL_LAMBDA(std::int64_t k) { return k < cp[0] && lp[k] >= 0; });
+      for_each_with_scratch(
+          ctx, bound, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[rp[k]], work); }, false,
+          cp + 1, max_threads);
     }
   }
-  for_each_with_scratch(ctx, left, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[k], work); });
-  return m;
+  if (!Tiers || !tiered)
+    for_each_with_scratch(
+        ctx, bound, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[k], work); }, false, cp,
+        max_threads);
+  if (!tally) return bound;
+  parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { *tally += cp[0]; });
+  return 0;
 }
 }  // namespace detail
 
 // Runs fast(i) on all n items (full occupancy); the items for which it returns false
 // (undecided) are compacted and run through exact(i, work) with a private scratch of
 // work_doubles doubles. `undecided` is caller scratch of n bytes. Returns the number
-// of items that needed an exact evaluation (synchronizes).
+// of items that needed an exact evaluation (synchronizes); with `tally` (one counter in
+// backend memory) adds that number to *tally instead and returns 0, without waiting for
+// the host when n <= kUncountedListMax (gFlip3D's flip iterations: bench/RESULTS.md,
+// session 19). The host then does not know how many items need the scratch; max_threads
+// > 0 caps the scratch threads (for_each_with_scratch), which the caller sizes from what
+// it saw before: otherwise the scratch is sized by n.
 template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
-                             std::size_t work_doubles) {
-  return detail::fast_then_exact_impl<false>(ctx, n, undecided, fast, exact, work_doubles, false);
+                             std::size_t work_doubles, std::int64_t* tally = nullptr, std::int64_t max_threads = -1) {
+  return detail::fast_then_exact_impl<false>(ctx, n, undecided, fast, exact, work_doubles, false, tally, max_threads);
 }
 // The same with exact(i, work) returning whether it decided item i; with `tiered` the
 // undecided items are first tried with work = nullptr, and only
 // those it leaves go to the scratch threads (see the top of this file).
 template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact_tiered(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
-                                    std::size_t work_doubles, bool tiered) {
-  return detail::fast_then_exact_impl<true>(ctx, n, undecided, fast, exact, work_doubles, tiered);
+                                    std::size_t work_doubles, bool tiered, std::int64_t* tally = nullptr,
+                                    std::int64_t max_threads = -1) {
+  return detail::fast_then_exact_impl<true>(ctx, n, undecided, fast, exact, work_doubles, tiered, tally, max_threads);
 }
 
 // Signs: out[i] = filter(i) (a sign, or kUndecided), then exact(i, work) for the

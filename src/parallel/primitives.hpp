@@ -92,6 +92,19 @@ std::size_t select_indices(Context<Cpu>&, std::size_t n, I* out, Pred pred) {
     return static_cast<std::size_t>(thrust::copy_if(pol, first, first + n, out, pred) - out);
   });
 }
+// The same with the count written to *count (backend memory) instead of returned: the
+// CUDA form does not wait for the host; later calls read the count on the backend
+// (parallel_for_counted, for_each_with_scratch's count, predicates that read it).
+template <class I, class Pred>
+void select_indices_to(Context<Cpu>& c, std::size_t n, I* out, std::int64_t* count, Pred pred) {
+  *count = static_cast<std::int64_t>(select_indices(c, n, out, pred));
+}
+// f(i) for i in [0, min(n, *count)), *count in backend memory, set by an earlier call on
+// the stream: n bounds the work the host knows of, *count is what the backend found.
+template <class F>
+void parallel_for_counted(Context<Cpu>& c, std::int64_t n, const std::int64_t* count, F f) {
+  parallel_for(c, n < *count ? n : *count, f);
+}
 // Number of indices i in [0, n) with pred(i) (synchronizes): to size an output exactly
 // before select_indices when few are expected.
 template <class Pred>
@@ -169,6 +182,13 @@ __global__ void for_kernel(std::int64_t n, F f) {
   const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
   for (std::int64_t i = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += stride) f(i);
 }
+template <class F>
+__global__ void for_counted_kernel(std::int64_t n, const std::int64_t* count, F f) {
+  const std::int64_t c = *count;
+  const std::int64_t m = c < n ? c : n;
+  const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
+  for (std::int64_t i = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x; i < m; i += stride) f(i);
+}
 inline unsigned grid_for(const Context<Cuda>& c, std::int64_t n, int block) {
   std::int64_t want = (n + block - 1) / block;
   std::int64_t cap = std::int64_t(c.sm_count()) * 64;
@@ -191,6 +211,18 @@ void parallel_for(Context<Cuda>& c, std::int64_t n, F f, int block = 256) {
   if (n <= 0) return;
   detail::for_kernel<<<detail::grid_for(c, n, block), block, 0, c.stream()>>>(n, f);
   GDEL_CUDA_CHECK_LAUNCH("parallel_for");
+}
+
+// The bound n is what the host knows; the count is usually far below it (a selection's
+// survivors), so the grid is capped lower than parallel_for's: the blocks past the
+// count only read it and leave.
+template <class F>
+void parallel_for_counted(Context<Cuda>& c, std::int64_t n, const std::int64_t* count, F f, int block = 256) {
+  if (n <= 0) return;
+  const unsigned cap = static_cast<unsigned>(c.sm_count()) * 8;
+  const unsigned grid = detail::grid_for(c, n, block);
+  detail::for_counted_kernel<<<grid < cap ? grid : cap, block, 0, c.stream()>>>(n, count, f);
+  GDEL_CUDA_CHECK_LAUNCH("parallel_for_counted");
 }
 
 template <class T>
@@ -246,14 +278,21 @@ std::size_t copy_if(Context<Cuda>& c, const T* in, T* out, std::size_t n, Pred p
   return static_cast<std::size_t>(cnt.get(0));
 }
 template <class I, class Pred>
+void select_indices_to(Context<Cuda>& c, std::size_t n, I* out, std::int64_t* count, Pred pred) {
+  if (!n) {
+    detail::Memory<Cuda>::memset(c, count, 0, sizeof(std::int64_t));
+    return;
+  }
+  thrust::counting_iterator<I> first(0);
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceSelect::If(t, b, first, out, count, static_cast<std::int64_t>(n), pred, c.stream());
+  });
+}
+template <class I, class Pred>
 std::size_t select_indices(Context<Cuda>& c, std::size_t n, I* out, Pred pred) {
   if (!n) return 0;
   Buffer<std::int64_t, Cuda> cnt(c, 1);
-  std::int64_t* cp = cnt.data();
-  thrust::counting_iterator<I> first(0);
-  detail::with_temp(c, [&](void* t, std::size_t& b) {
-    return cub::DeviceSelect::If(t, b, first, out, cp, static_cast<std::int64_t>(n), pred, c.stream());
-  });
+  select_indices_to(c, n, out, cnt.data(), pred);
   return static_cast<std::size_t>(cnt.get(0));
 }
 namespace detail {

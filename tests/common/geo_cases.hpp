@@ -155,17 +155,31 @@ void geo_scratch_free_cases(double unit) {
   EXPECT_EQ(inf_refused, all ? 0 : T / 8);
   EXPECT_GT(ties, T / 20);
 
-  // The tiered pass: every item undecided by "fast", then exact with a scratch for the
-  // items that need one. Same signs as the plain exact pass; the first tier (no scratch)
-  // takes exactly the tuples without ∞.
-  for (bool tiered : {true, false}) {
+  // The tiered pass: the items "fast" leaves (two in three) go to exact with a scratch
+  // only where they need one. Same signs as the plain exact pass; the first tier (no
+  // scratch) takes exactly the tuples without ∞. With a tally (the flip iterations' form:
+  // no wait for the host) the count of exact items goes to the counter, not the result.
+  Buffer<std::int8_t, B> exd(ctx);
+  exd.assign(exact);
+  const std::int8_t* exs = exd.data();
+  const std::int64_t undecided = T - (T + 2) / 3;
+  for (int variant = 0; variant < 4; ++variant) {
+    const bool tiered = variant % 2 == 0, tallied = variant >= 2;
     Buffer<std::int8_t, B> r(ctx, static_cast<std::size_t>(kTests * T));
     Buffer<std::int8_t, B> tier(ctx, static_cast<std::size_t>(T));
     Buffer<std::int8_t, B> und(ctx, static_cast<std::size_t>(T));
+    Buffer<std::int64_t, B> tally(ctx, 1);
+    tally.set(0, 5);
     std::int8_t* rp = r.data();
     std::int8_t* tp = tier.data();
     const std::int64_t m = fast_then_exact_tiered(
-        ctx, T, und.data(), [=] GDEL_LAMBDA(std::int64_t) { return false; },
+        ctx, T, und.data(),
+        [=] GDEL_LAMBDA(std::int64_t t) {
+          if (t % 3 != 0) return false;
+          for (int k = 0; k < kTests; ++k) rp[kTests * t + k] = exs[kTests * t + k];
+          tp[t] = 0;
+          return true;
+        },
         [=] GDEL_LAMBDA(std::int64_t t, double* work) {
           std::int8_t s[kTests];
           geo_exact_signs(gi, up + 5 * t, work, s);
@@ -175,16 +189,18 @@ void geo_scratch_free_cases(double unit) {
           tp[t] = work == nullptr ? 1 : 2;
           return true;
         },
-        geom::kPredicateWork, tiered);
-    EXPECT_EQ(m, T);
+        geom::kPredicateWork, tiered, tallied ? tally.data() : nullptr);
+    EXPECT_EQ(m, tallied ? 0 : undecided);
+    EXPECT_EQ(tally.get(0), tallied ? 5 + undecided : 5);
     const std::vector<std::int8_t> rh = r.to_host(), th = tier.to_host();
     long first = 0;
     for (int t = 0; t < T; ++t) {
       first += th[t] == 1;
-      EXPECT_EQ(th[t], (tiered && (all || t % 8 != 0)) ? 1 : 2) << t;
+      EXPECT_EQ(th[t], t % 3 == 0 ? 0 : (tiered && (all || t % 8 != 0)) ? 1 : 2) << t;
       for (int k = 0; k < kTests; ++k) EXPECT_EQ(rh[kTests * t + k], exact[kTests * t + k]) << t << " " << k;
     }
-    std::printf("[tiered pass] tiered=%d: %ld of %d items decided without a scratch\n", int(tiered), first, T);
+    std::printf("[tiered pass] tiered=%d tally=%d: %ld of %lld exact items decided without a scratch\n", int(tiered),
+                int(tallied), first, static_cast<long long>(undecided));
   }
   // Geo::int_all: for_each_with_scratch without a scratch (the star splaying engine's
   // kernels on integer input) gives the signs of the plain exact pass

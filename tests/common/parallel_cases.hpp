@@ -73,6 +73,27 @@ void parallel_layer_cases(par::Context<B>& ctx) {
     auto ih = idx.to_host();
     ih.resize(k);
     EXPECT_EQ(ih, ridx);
+    // the same selection with its count left on the backend, and loops cut by that count
+    // below a bound the host knows (gFlip3D's iterations: one wait for several counts)
+    {
+      Buffer<std::int64_t, B> c(ctx, 1);
+      std::int64_t* cp = c.data();
+      Buffer<std::int32_t, B> idx2(ctx, n);
+      select_indices_to(ctx, n, idx2.data(), cp, [=] GDEL_LAMBDA(std::int32_t i) { return (ap[i] % 3) == 0; });
+      ASSERT_EQ(c.get(0), static_cast<std::int64_t>(k));
+      auto ih2 = idx2.to_host();
+      ih2.resize(k);
+      EXPECT_EQ(ih2, ridx);
+      for (std::int64_t bound : {static_cast<std::int64_t>(n), static_cast<std::int64_t>(n / 7)}) {
+        Buffer<std::int8_t, B> hit(ctx, std::max<std::size_t>(n, 1));
+        hit.memset(0);
+        std::int8_t* hp = hit.data();
+        parallel_for_counted(ctx, bound, cp, [=] GDEL_LAMBDA(std::int64_t i) { hp[i] += 1; });
+        const auto hh = hit.to_host();
+        const std::int64_t want = std::min<std::int64_t>(bound, static_cast<std::int64_t>(k));
+        for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(hh[i], static_cast<std::int64_t>(i) < want ? 1 : 0) << i;
+      }
+    }
     // counting the same selection (to size an output exactly)
     EXPECT_EQ(count_indices(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { return (ap[i] % 3) == 0; }),
               static_cast<std::int64_t>(ridx.size()));
