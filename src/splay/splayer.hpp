@@ -436,7 +436,11 @@ class Splayer {
   // the other stars is launched), build_one_star runs there, one host thread per star, while
   // that kernel runs, and the triangles, count, killer and gone pairs go back
   // (run_host_jobs). A stage of the repair moved from the GPU to the host: docs/gdel3d.md.
-  static constexpr I64 kHostBuildMin = 512;
+  // 128: on the H200 the grid's star builds took 225 ms at 512 and 108 at 128 (its
+  // largest working set 1 824), the sphere's (largest 179) the same; at 48 the grid's
+  // took 75 ms but the sphere sent thousands of stars to the host: 1.8 s (bench/RESULTS.md,
+  // session 19).
+  static constexpr I64 kHostBuildMin = 128;
   // Working sets above this go to the host: kHostBuildMin on the CUDA backend, never on the
   // CPU backend; GDEL_HOST_STAR_MIN=N sets it on both (tests run the host path on the CPU).
   static I64 host_build_min() {
