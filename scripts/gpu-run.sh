@@ -107,6 +107,17 @@ pathlib.Path(sys.argv[2]).write_text(json.dumps(rows, indent=1))
 PY
 }
 
+# old / new binary alternating, twice, on the same arguments: alternate TAG ARGS...
+# (gdel-bench-old beside gdel-bench in the binaries' folder)
+alternate() {
+  local tag=$1
+  shift
+  for r in 1 2; do
+    step "${tag}_old$r" 60 "$bin/gdel-bench-old" "$@"
+    bench "${tag}_new$r" 60 "$@"
+  done
+}
+
 case "$plan" in
   tests)  # the GPU tests of gstar4d and its stages, and the gdel3d regression tests
     step star_stage 120 "$tbin/gpu_star_stage"
@@ -572,10 +583,7 @@ case "$plan" in
           # without the tiered exact pass (GDEL_EXACT_TIERS=0); step profiles of grid and sphere
     step gflip3d 150 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
-    for r in 1 2; do
-      step "s18b_old$r" 60 "$bin/gdel-bench-old" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
-      bench "s18b_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
-    done
+    alternate s18b --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_EXACT_TIERS=0 bench s18b_notiers 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
     step s18b_old7 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     bench s18b_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
@@ -603,6 +611,26 @@ case "$plan" in
     step ncu 150 ncu --clock-control none --launch-skip 2500 --launch-count 60 --section SpeedOfLight \
       --section Occupancy --section LaunchStats --section MemoryWorkloadAnalysis \
       "$gb" --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s19a)  # session 19: a flip iteration's counts read by the host once (the exact passes counted on the device);
+          # tests; old (gdel-bench-old) / new alternating on uniform, grid, sphere 10^6 and uniform 10^7; profiles.
+          # GDEL_S19_ENV: environment for every step (the defaults chosen from s18c)
+    # shellcheck disable=SC2086
+    [ -n "${GDEL_S19_ENV:-}" ] && export ${GDEL_S19_ENV}
+    step parallel 60 "$tbin/gpu_parallel"
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    alternate s19a --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+    step s19a_old7 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s19a_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s19a_prof 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    # the repair's star builds: which stars the host builds (working sets above GDEL_HOST_STAR_MIN), and sizes
+    for hm in 512 128 48 24; do
+      GDEL_HOST_STAR_MIN=$hm GDEL_SPLAY_DEBUG=1 GDEL_PROFILE=1 step "s19a_host$hm" 40 "$gb" --dist grid,sphere --n 1000000 \
+        --methods gdel3d-cuda-dev --repeat 1
+      grep -E "largest working set|stars of failed|gdel3d repair:|splay: insert round" "/tmp/gpu-run-s19a_host$hm.log" \
+        | tee -a "$out/summary.txt"
+    done
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
