@@ -632,6 +632,15 @@ case "$plan" in
         | tee -a "$out/summary.txt"
     done
     ;;
+  s19b)  # session 19: s19a's change with the scratch sized by the items where the host waits anyway and one block
+          # for the scratch pass on Geo::int_all input; stars above 128 built on the host. Old (e4ef07d) at its defaults
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    alternate s19b --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+    step s19b_old7 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s19b_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s19b_prof 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
