@@ -118,6 +118,18 @@ alternate() {
   done
 }
 
+# The gFlip3D/gDel3D comparison of an old and a new binary: tests, alternate on uniform,
+# grid and sphere 10^6, uniform 10^7 old then new, step profiles of new: flipcmp TAG
+flipcmp() {
+  local tag=$1
+  step gflip3d 150 "$tbin/gpu_gflip3d"
+  step gdel3d 200 "$tbin/gpu_gdel3d"
+  alternate "$tag" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+  step "${tag}_old7" 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+  bench "${tag}_new7" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+  GDEL_PROFILE=1 bench "${tag}_prof" 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+}
+
 case "$plan" in
   tests)  # the GPU tests of gstar4d and its stages, and the gdel3d regression tests
     step star_stage 120 "$tbin/gpu_star_stage"
@@ -618,12 +630,7 @@ case "$plan" in
     # shellcheck disable=SC2086
     [ -n "${GDEL_S19_ENV:-}" ] && export ${GDEL_S19_ENV}
     step parallel 60 "$tbin/gpu_parallel"
-    step gflip3d 150 "$tbin/gpu_gflip3d"
-    step gdel3d 200 "$tbin/gpu_gdel3d"
-    alternate s19a --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
-    step s19a_old7 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    bench s19a_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    GDEL_PROFILE=1 bench s19a_prof 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    flipcmp s19a
     # the repair's star builds: which stars the host builds (working sets above GDEL_HOST_STAR_MIN), and sizes
     for hm in 512 128 48 24; do
       GDEL_HOST_STAR_MIN=$hm GDEL_SPLAY_DEBUG=1 GDEL_PROFILE=1 step "s19a_host$hm" 40 "$gb" --dist grid,sphere --n 1000000 \
@@ -634,12 +641,7 @@ case "$plan" in
     ;;
   s19b)  # session 19: s19a's change with the scratch sized by the items where the host waits anyway and one block
           # for the scratch pass on Geo::int_all input; stars above 128 built on the host. Old (e4ef07d) at its defaults
-    step gflip3d 150 "$tbin/gpu_gflip3d"
-    step gdel3d 200 "$tbin/gpu_gdel3d"
-    alternate s19b --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
-    step s19b_old7 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    bench s19b_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    GDEL_PROFILE=1 bench s19b_prof 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    flipcmp s19b
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
