@@ -84,7 +84,7 @@ struct FlipConfig {
 // returns whether it decided; on integer input (Geo::int_points / int_all) the undecided items are first tried
 // without a scratch (par::fast_then_exact_tiered, Geo::int_points).
 // With `tally` (a counter in backend memory) the count of exact items goes there and the
-// host is not waited for (par::fast_then_exact).
+// host is not waited for; max_threads > 0 then caps the scratch threads (par::fast_then_exact).
 template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, const Geo& g, std::int64_t n, std::int8_t* undecided, Fast fast,
                              Exact exact, std::int64_t* tally = nullptr, std::int64_t max_threads = -1) {

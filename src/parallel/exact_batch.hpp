@@ -102,8 +102,9 @@ void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_do
 
 namespace detail {
 // One path for both forms: the undecided items' list, its length on the backend (cnt[0]),
-// the passes bounded by what the host knows and cut by the backend's count, so that
-// nothing waits for the host before the exact passes are enqueued.
+// the passes bounded by what the host knows and cut by the backend's count. With a tally
+// nothing waits for the host before the exact passes are enqueued (below 2^22 items);
+// without one the count is read first, so that the scratch is sized by it.
 template <bool Tiers, class B, class Fast, class Exact>
 std::int64_t fast_then_exact_impl(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
                                   std::size_t work_doubles, bool tiered, std::int64_t* tally,
