@@ -30,6 +30,8 @@
 #include <exception>
 #include <vector>
 
+#include <omp.h>
+
 #include "parallel/atomic.hpp"
 #include "parallel/exact_batch.hpp"
 #include "parallel/host_threads.hpp"
@@ -389,20 +391,12 @@ class Splayer {
     // thread at tens of µs per exact, symbolically perturbed test (bench/RESULTS.md
     // 2026-11-25: 7.3 s for one 1 845-point star on the H100). Those few stars are built
     // on the host's cores instead, with the same code, while the kernel builds the rest.
-    const I64 host_min = host_build_min();
+    // (host_pick raises it where more stars than host_star_cap() would go)
+    I64 host_min = host_build_min();
     // GDEL_FLIPFLOP_STEPS=N caps Flip-Flop's steps per star (tests: 0 makes every seeded
     // star take the rebuild fallback)
     const I64 ff_cap = std::getenv("GDEL_FLIPFLOP_STEPS") ? std::atoll(std::getenv("GDEL_FLIPFLOP_STEPS")) : -1;
-    std::vector<I64> huge;
-    if (host_min < (I64(1) << 62)) {
-      Buffer<I64, B> hj(ctx_, static_cast<std::size_t>(std::max<I64>(k, 1)));
-      const std::size_t nh = par::select_indices(ctx_, static_cast<std::size_t>(k), hj.data(),
-                                                 [=] GDEL_LAMBDA(I64 j) { return lhp[j + 1] - lhp[j] > host_min; });
-      if (nh > 0) {
-        hj.resize(nh);
-        huge = hj.to_host();
-      }
-    }
+    const std::vector<I64> huge = host_pick(k, host_min, host_gate(), [=] GDEL_LAMBDA(I64 j) { return lhp[j + 1] - lhp[j]; });
     HostJobs hjobs;
     if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov, lp, sdp);
     ss_.host_built += static_cast<I64>(huge.size());
@@ -436,16 +430,69 @@ class Splayer {
   // the other stars is launched), build_one_star runs there, one host thread per star, while
   // that kernel runs, and the triangles, count, killer and gone pairs go back
   // (run_host_jobs). A stage of the repair moved from the GPU to the host: docs/gdel3d.md.
-  // 128: on the H200 the grid's star builds took 225 ms at 512 and 108 at 128 (its
-  // largest working set 1 824), the sphere's (largest 179) the same; at 48 the grid's
-  // took 75 ms but the sphere sent thousands of stars to the host: 1.8 s (bench/RESULTS.md,
-  // session 19).
-  static constexpr I64 kHostBuildMin = 128;
+  // 48, with at most host_star_cap() stars per build or round and only where one
+  // exceeds kHostGate: on the H200 the grid's star builds took 225 ms at 512, 108 at 128
+  // and 75 at 48 (its largest working set 1 824); the sphere's (largest 179) the same at
+  // 512 and 128, but without a cap it sent thousands of stars to the host at 48: 1.8 s
+  // (bench/RESULTS.md, session 19). With the cap and gate the grid's repair 0.14 → 0.11 s
+  // and the sphere's unchanged (session 20, s20b).
+  static constexpr I64 kHostBuildMin = 48;
   // Working sets above this go to the host: kHostBuildMin on the CUDA backend, never on the
   // CPU backend; GDEL_HOST_STAR_MIN=N sets it on both (tests run the host path on the CPU).
   static I64 host_build_min() {
     if (const char* e = std::getenv("GDEL_HOST_STAR_MIN")) return std::max<I64>(4, std::atoll(e));
     return B::is_device ? kHostBuildMin : I64(1) << 62;
+  }
+  // At most this many stars of one build or insertion round go to the host: 4 per host
+  // thread (GDEL_HOST_STAR_CAP=N sets it). Each costs a few small copies each way, and
+  // beyond a few per thread the host becomes the slower side: with the threshold at 48
+  // and no cap the sphere sent thousands and took 1.8 s instead of 0.86 (bench/
+  // RESULTS.md, session 19).
+  static std::size_t host_star_cap() {
+    if (const char* e = std::getenv("GDEL_HOST_STAR_CAP")) return static_cast<std::size_t>(std::max(1LL, std::atoll(e)));
+    return 4 * static_cast<std::size_t>(std::max(1, omp_get_max_threads()));
+  }
+  // The host path is taken only where a star exceeds this (working-set points; twice as
+  // many triangles for the insertions): it first copies every point to the host
+  // (host_geo), 320 MB at 10^7 points, which the uniform generator's few stars above 48
+  // did not repay: its repair took 0.31 s instead of 0.08, 3.6 s instead of 1.1 at 10^8
+  // (bench/RESULTS.md, session 20). With GDEL_HOST_STAR_MIN set, no gate.
+  static constexpr I64 kHostGate = 128;
+  static I64 host_gate() { return std::getenv("GDEL_HOST_STAR_MIN") ? host_build_min() : kHostGate; }
+  // The groups j in [0, n) with size(j) > min, for the host, if the largest exceeds gate:
+  // if more than host_star_cap() qualify, only the largest. min is raised to the size of
+  // the largest one left out (ties at the cut stay too; all of them where the gate
+  // stops the host path), so that "size(j) > min" is again exactly the host's share for
+  // the kernel that skips those groups. Empty where nothing goes to the host.
+  template <class Size>
+  std::vector<I64> host_pick(I64 n, I64& min, I64 gate, Size size) {
+    if (n <= 0 || min >= (I64(1) << 61)) return {};
+    const I64 lim = min;
+    Buffer<I64, B> hj(ctx_, static_cast<std::size_t>(n));
+    const std::size_t nh = par::select_indices(ctx_, static_cast<std::size_t>(n), hj.data(),
+                                               [=] GDEL_LAMBDA(I64 j) { return size(j) > lim; });
+    if (nh == 0) return {};
+    hj.resize(nh);
+    Buffer<I64, B> sz(ctx_, nh);
+    I64* zp = sz.data();
+    const I64* jp = hj.data();
+    par::parallel_for(ctx_, static_cast<I64>(nh), [=] GDEL_LAMBDA(I64 i) { zp[i] = size(jp[i]); });
+    const std::vector<I64> sizes = sz.to_host();
+    const I64 top = *std::max_element(sizes.begin(), sizes.end());
+    if (top <= gate) {
+      min = top;
+      return {};
+    }
+    std::vector<I64> idx = hj.to_host();
+    const std::size_t cap = host_star_cap();
+    if (nh <= cap) return idx;
+    std::vector<I64> order = sizes;
+    std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(cap), order.end(), std::greater<I64>());
+    min = order[cap];  // the (cap + 1)-th largest
+    std::vector<I64> out;
+    for (std::size_t i = 0; i < nh; ++i)
+      if (sizes[i] > min) out.push_back(idx[i]);
+    return out;
   }
   // A star worked on the host (its group j, star s, slots [begin, begin + cap), room for
   // gone pairs [g0, g1) of the round's list, used of it), and its write-back.
@@ -516,22 +563,35 @@ class Splayer {
     HostJobs H(huge.size());
     host_geo();
     const StarView sv = view();
+    // each job's scalars, gathered on the backend and copied in one piece
+    const std::vector<I64> f = gather_host_fields(huge, [=] GDEL_LAMBDA(I64 j, I64* o) {
+      const I64 s = s0 + j;
+      o[0] = lhp[j];
+      o[1] = lhp[j + 1];
+      o[2] = rmp[j];
+      o[3] = rmp[j + 1];
+      o[4] = sv.begin[s];
+      o[5] = sv.cap[s];
+      o[6] = gvp[j];
+      o[7] = sdp[j];
+    });
     for (std::size_t h = 0; h < huge.size(); ++h) {
       HostJob& J = H[h];
+      const I64* o = f.data() + kHostFields * h;
       J.j = huge[h];
       J.s = s0 + J.j;
-      get(&J.a, lhp + J.j, 1);
-      get(&J.b, lhp + J.j + 1, 1);
-      get(&J.g0, rmp + J.j, 1);
-      get(&J.g1, rmp + J.j + 1, 1);
-      get(&J.begin, static_cast<const I64*>(sv.begin + J.s), 1);
-      get(&J.cap, static_cast<const std::int32_t*>(sv.cap + J.s), 1);
-      get(&J.me, gvp + J.j, 1);
+      J.a = o[0];
+      J.b = o[1];
+      J.g0 = o[2];
+      J.g1 = o[3];
+      J.begin = o[4];
+      J.cap = static_cast<std::int32_t>(o[5]);
+      J.me = static_cast<vid_t>(o[6]);
       J.pts.resize(static_cast<std::size_t>(J.b - J.a));
       get(J.pts.data(), ov + J.a, J.pts.size());
       J.T.resize(static_cast<std::size_t>(J.cap));
       J.S.assign(static_cast<std::size_t>(J.cap), std::uint8_t(kTriFree));
-      get(&J.seeded, sdp + J.j, 1);
+      J.seeded = static_cast<std::int32_t>(o[7]);
       if (J.seeded >= 0) {  // the seed star (its triangles; the rest is scratch)
         get(J.T.data(), static_cast<const Tri*>(sv.tri + J.begin), static_cast<std::size_t>(J.seeded));
         get(J.S.data(), static_cast<const std::uint8_t*>(sv.state + J.begin), static_cast<std::size_t>(J.seeded));
@@ -541,6 +601,21 @@ class Splayer {
       J.gone.resize(static_cast<std::size_t>(std::max<I64>(J.g1 - J.g0, 1)));
     }
     return H;
+  }
+  // kHostFields scalars per host job: field(j, out) writes those of group huge[h] to
+  // out[kHostFields * h, ...) on the backend; one copy brings them all (not one small
+  // copy per scalar and job).
+  static constexpr std::size_t kHostFields = 8;
+  template <class Field>
+  std::vector<I64> gather_host_fields(const std::vector<I64>& huge, Field field) {
+    Buffer<I64, B> js(ctx_);
+    js.assign(huge);
+    Buffer<I64, B> out(ctx_, kHostFields * huge.size());
+    const I64* jp = js.data();
+    I64* op = out.data();
+    par::parallel_for(ctx_, static_cast<I64>(huge.size()),
+                      [=] GDEL_LAMBDA(I64 h) { field(jp[h], op + kHostFields * static_cast<std::size_t>(h)); });
+    return out.to_host();
   }
   void run_host_jobs(HostJobs& H, U64* gp, I64* up, std::int32_t* ffp, I64 ff_cap) {
     const flip::Geo& hg = host_geo_.g;
@@ -573,23 +648,37 @@ class Splayer {
     const StarView sv = view();
     const I64 n = static_cast<I64>(req.size());
     std::vector<InsertJob> jobs(huge.size());
+    // each job's scalars, gathered on the backend and copied in one piece
+    const I64* hp = heads.data();
+    const I64* rmp = room.data();
+    const U64* rp = req.data();
+    const std::int32_t* so = star_of_.data();
+    const std::vector<I64> f = gather_host_fields(huge, [=] GDEL_LAMBDA(I64 j, I64* o) {
+      const I64 a = hp[j];
+      const std::int32_t s = so[key_target(rp[a])];
+      o[0] = a;
+      o[1] = j + 1 < nh ? hp[j + 1] : n;
+      o[2] = s;
+      o[3] = sv.begin[s];
+      o[4] = sv.cap[s];
+      o[5] = sv.count[s];
+      o[6] = rmp[j];
+      o[7] = rmp[j + 1];
+    });
     for (std::size_t h = 0; h < huge.size(); ++h) {
       InsertJob& J = jobs[h];
+      const I64* o = f.data() + kHostFields * h;
       J.j = huge[h];
-      I64 a = 0, b = n;
-      get(&a, heads.data() + J.j, 1);
-      if (J.j + 1 < nh) get(&b, heads.data() + J.j + 1, 1);
+      const I64 a = o[0], b = o[1];
       J.req.resize(static_cast<std::size_t>(b - a));
       get(J.req.data(), req.data() + a, J.req.size());
       J.me = key_target(J.req[0]);
-      std::int32_t s32 = -1;
-      get(&s32, star_of_.data() + J.me, 1);
-      J.s = s32;
-      get(&J.begin, static_cast<const I64*>(sv.begin + J.s), 1);
-      get(&J.cap, static_cast<const std::int32_t*>(sv.cap + J.s), 1);
-      get(&J.count, static_cast<const std::int32_t*>(sv.count + J.s), 1);
-      get(&J.g0, room.data() + J.j, 1);
-      get(&J.g1, room.data() + J.j + 1, 1);
+      J.s = o[2];
+      J.begin = o[3];
+      J.cap = static_cast<std::int32_t>(o[4]);
+      J.count = static_cast<std::int32_t>(o[5]);
+      J.g0 = o[6];
+      J.g1 = o[7];
       J.T.resize(static_cast<std::size_t>(J.cap));
       J.S.resize(static_cast<std::size_t>(J.cap));
       get(J.T.data(), static_cast<const Tri*>(sv.tri + J.begin), J.T.size());
@@ -890,20 +979,13 @@ class Splayer {
     // on the host's cores too, with the same code, while the kernel serves the others:
     // on one GPU thread their every degenerate test cost tens of µs (bench/RESULTS.md,
     // session 14: 0.7 s of the grid's splaying rounds).
-    const I64 host_tri_min = host_build_min() < (I64(1) << 61) ? 2 * host_build_min() : I64(1) << 62;
+    // (host_pick raises it where more stars than host_star_cap() would go)
+    I64 host_tri_min = host_build_min() < (I64(1) << 61) ? 2 * host_build_min() : I64(1) << 62;
     std::vector<InsertJob> ijobs;
-    if (host_tri_min < (I64(1) << 62)) {
-      // (nh + 1, not std::max(nh, 1): nvcc 13.0 crashes, "i_copy_expr_tree", when nh, a
-      // const local initialised by a call with an extended lambda, binds to a reference)
-      Buffer<I64, B> hj(ctx_, nh + 1);
-      std::size_t nhuge = par::select_indices(ctx_, nh, hj.data(), [=] GDEL_LAMBDA(I64 j) {
-        return cnt[so[key_target(rp[hp[j]])]] > host_tri_min;
-      });
-      if (nhuge > 0) {
-        hj.resize(nhuge);
-        ijobs = insert_jobs(hj.to_host(), req, heads, static_cast<I64>(nh), room);
-      }
-    }
+    const std::vector<I64> huge = host_pick(static_cast<I64>(nh), host_tri_min, 2 * host_gate(), [=] GDEL_LAMBDA(I64 j) {
+      return static_cast<I64>(cnt[so[key_target(rp[hp[j]])]]);
+    });
+    if (!huge.empty()) ijobs = insert_jobs(huge, req, heads, static_cast<I64>(nh), room);
     par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, double* work) {
       const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
       const vid_t sv_vert = key_target(rp[a]);

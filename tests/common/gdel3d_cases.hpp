@@ -73,10 +73,12 @@ inline void gdel3d_scale_cases(Backend b, std::initializer_list<std::size_t> siz
 }
 
 // The repair's host work on huge stars (on the CUDA backend: building the stars whose
-// working sets exceed 512 points, and the splaying rounds' insertions into stars of over
-// 1 024 triangles) gives the same triangulation as the in-kernel work: forced here for
-// every star over 8 points and every insertion into a star of over 16 triangles
-// (GDEL_HOST_STAR_MIN), on grid and sphere points; both host paths must have run.
+// working sets exceed 48 points, and the splaying rounds' insertions into stars of over
+// 96 triangles, at most 4 stars per host thread each time) gives the same triangulation
+// as the in-kernel work: forced here for every star over 8 points and every insertion
+// into a star of over 16 triangles (GDEL_HOST_STAR_MIN, no cap), on grid and sphere
+// points; both host paths must have run. With a cap of 3 stars per build or round
+// (GDEL_HOST_STAR_CAP) fewer stars go to the host, and the result is again the same.
 inline void gdel3d_host_star_case(Backend b) {
   for (auto d : {gen::Distribution::Grid, gen::Distribution::Sphere}) {
     SCOPED_TRACE(std::string(gen::to_string(d)));
@@ -86,13 +88,22 @@ inline void gdel3d_host_star_case(Backend b) {
     o.cpu_rounds = true;  // the rounds leave stars to repair, also on the CPU
     Triangulation base = delaunay(pts, o);
     ::setenv("GDEL_HOST_STAR_MIN", "8", 1);
+    ::setenv("GDEL_HOST_STAR_CAP", "1000000000", 1);
     Triangulation host = delaunay(pts, o);
+    ::setenv("GDEL_HOST_STAR_CAP", "3", 1);
+    Triangulation capped = delaunay(pts, o);
+    ::unsetenv("GDEL_HOST_STAR_CAP");
     ::unsetenv("GDEL_HOST_STAR_MIN");
     EXPECT_GT(host.stats.stars_built_on_host, 0);
     EXPECT_GT(host.stats.host_star_insertions, 0);
+    EXPECT_GT(capped.stats.stars_built_on_host, 0);
+    EXPECT_LT(capped.stats.stars_built_on_host, host.stats.stars_built_on_host);
     expect_exact_delaunay(pts, host, b);
+    expect_exact_delaunay(pts, capped, b);
     EXPECT_EQ(host.tets, base.tets);
     EXPECT_EQ(host.neighbors, base.neighbors);
+    EXPECT_EQ(capped.tets, base.tets);
+    EXPECT_EQ(capped.neighbors, base.neighbors);
   }
 }
 
