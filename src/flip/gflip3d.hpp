@@ -100,7 +100,7 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 4) {
+        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 5) {
     counts_.memset(0);
     int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
     quarter_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_, geom::kQuarterScale);
@@ -799,12 +799,17 @@ class GFlip3D {
     log_.release();
     if (with_log) log_.reserve(static_cast<std::size_t>(log_cap));
     log_iters_.assign(1, 0);
+    active_deferred_ = false;
     for (std::int64_t it = 0; it < cfg_.max_flip_iterations; ++it) {
       const std::int64_t na = static_cast<std::int64_t>(active_.size());
       if (na == 0) break;
       if (!flip_iteration(na, with_log)) break;
       check_mesh("after flip iteration");
       if (with_log && static_cast<std::int64_t>(log_.size()) > log_cap) relocate_through_dag();
+    }
+    if (active_deferred_) {  // the loop's callers read the active set: its length now
+      active_.resize(static_cast<std::size_t>(counts_.get(4)));
+      active_deferred_ = false;
     }
     st_.exact_evaluations += counts_.get(3);
     counts_.set(3, 0);
@@ -818,6 +823,11 @@ class GFlip3D {
   // against an iteration's work.
   static constexpr std::int64_t kDeferredExactMax = std::int64_t(1) << 24;
   std::int64_t* exact_tally() { return n_ <= kDeferredExactMax ? counts_.data() + 3 : nullptr; }
+  // The same bound for the next active set's length: below it a flip iteration leaves
+  // that length on the backend (counts_[4]) and the next one runs over the set's bound,
+  // the items past the length doing nothing (active_deferred_); above it the host waits
+  // for the length, so that the next iteration's lists are sized by it (the 10^8 peak).
+  bool defer_active() const { return n_ <= kDeferredExactMax; }
   // The scratch threads of those passes: twice the exact items of the iteration before
   // (read with the counts), at least kMinScratchThreads; one block where no test needs
   // the scratch (Geo::int_all: the scratch pass gets no items). Without the cap the
@@ -830,16 +840,23 @@ class GFlip3D {
   }
 
   // One parallel flipping iteration over the active set; false when nothing flipped.
+  // With active_deferred_, na is the active set's bound and counts_[4] its length: the
+  // positions past it propose nothing.
   bool flip_iteration(std::int64_t na, bool with_log) {
     MeshView m = mesh_.view();
     const Geo g = geo();
     const tid_t* A = active_.data();
+    const std::int64_t* alen = active_deferred_ ? counts_.data() + 4 : nullptr;
     Buffer<std::int32_t, B> prop(ctx_, static_cast<std::size_t>(na));
     std::int32_t* pp = prop.data();
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(na));
     st_.exact_evaluations += fast_then_exact(
         ctx_, g, na, und.data(),
         [=] GDEL_LAMBDA(std::int64_t k) {
+          if (alen && k >= *alen) {
+            pp[k] = -1;  // past the active set: no proposal
+            return true;
+          }
           int p = propose_flip<false>(g, m, A[k], nullptr);
           pp[k] = p;
           return p != kUndecidedResult;
@@ -853,7 +870,8 @@ class GFlip3D {
         exact_tally(), scratch_threads());
     par::mark(ctx_, "flip: propose");
     und.release();
-    return commit_flips(A, na, prop, with_log) > 0;
+    active_deferred_ = false;
+    return commit_flips(A, na, prop, with_log, defer_active()) > 0;
   }
 
   // Executes proposals: pp[k] (propose_flip's code, < 0: none) is the flip proposed by
@@ -862,7 +880,10 @@ class GFlip3D {
   // rejected proposers and the new tets the active set. Returns the number of flips;
   // 0 (nothing changed) when there was no proposal.
   // The proposal codes (prop) are released once the records are built.
-  std::int64_t commit_flips(const tid_t* A, std::int64_t na, Buffer<std::int32_t, B>& prop, bool with_log) {
+  // defer: the next active set's length stays on the backend (counts_[4], and
+  // active_deferred_ set; active_ then has the set's bound as its size).
+  std::int64_t commit_flips(const tid_t* A, std::int64_t na, Buffer<std::int32_t, B>& prop, bool with_log,
+                            bool defer = false) {
     const std::int32_t* pp = prop.data();
     MeshView m = mesh_.view();
     const Geo g = geo();
@@ -1142,15 +1163,22 @@ class GFlip3D {
       for (int a = 0; a < 3; ++a)
         if (rec[f].out[a] >= 0) m.state[rec[f].out[a]] |= mesh::kQueued;
     });
-    Buffer<tid_t, B> act(ctx_, static_cast<std::size_t>(np + 3 * nfl));
+    // With `defer` its length stays on the backend (counts_[4]): the next iteration runs
+    // over the bound, np + 3 nfl, without a wait here (bench/RESULTS.md, session 20).
+    const std::int64_t abound = np + 3 * nfl;
+    Buffer<tid_t, B> act(ctx_, static_cast<std::size_t>(abound));
     tid_t* acp = act.data();
-    const std::size_t na2 = par::select_indices(ctx_, slots, acp, [=] GDEL_LAMBDA(tid_t t) {
+    par::select_indices_to(ctx_, slots, acp, cn + 4, [=] GDEL_LAMBDA(tid_t t) {
       return (m.state[t] & mesh::kQueued) != 0;
     });
-    par::parallel_for(ctx_, static_cast<std::int64_t>(na2), [=] GDEL_LAMBDA(std::int64_t j) {
+    par::parallel_for_counted(ctx_, abound, cn + 4, [=] GDEL_LAMBDA(std::int64_t j) {
       m.state[acp[j]] &= static_cast<std::uint8_t>(~mesh::kQueued);
     });
-    act.resize(na2);
+    if (defer) {
+      active_deferred_ = true;
+    } else {
+      act.resize(static_cast<std::size_t>(counts_.get(4)));
+    }
     active_ = std::move(act);
     par::mark(ctx_, "flip: next active set");
     if (with_log) log_iters_.push_back(static_cast<std::int64_t>(log_.size()));
@@ -1465,6 +1493,7 @@ class GFlip3D {
   // evaluations of the flip loop (flushed into Stats at its end).
   Buffer<std::int64_t, B> counts_;
   std::int64_t tally_seen_ = 0;  // counts_[3] at the last read
+  bool active_deferred_ = false;  // active_'s length is counts_[4], its size a bound (flip_loop)
   std::int64_t exact_seen_ = 0;  // exact items between the last two reads
   double t_insert_ = 0, t_flip_ = 0, t_relocate_ = 0, t_reorder_ = 0;
   bool debug_ = false;
