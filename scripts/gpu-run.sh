@@ -643,6 +643,44 @@ case "$plan" in
           # for the scratch pass on Geo::int_all input; stars above 128 built on the host. Old (e4ef07d) at its defaults
     flipcmp s19b
     ;;
+  s20a)  # session 20: the repair's host stars capped (at most 4 per host thread per build or round, the largest)
+          # and their scalars gathered in one copy; threshold 48. gpu_gdel3d; threshold x cap on grid and sphere
+          # 10^6 (128 without a cap: session 19's setting); every generator at 10^6; uniform 10^7; 10^8 last
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    for v in "GDEL_HOST_STAR_MIN=128 GDEL_HOST_STAR_CAP=1000000000" "GDEL_HOST_STAR_MIN=48" \
+             "GDEL_HOST_STAR_MIN=48 GDEL_HOST_STAR_CAP=16" "GDEL_HOST_STAR_MIN=48 GDEL_HOST_STAR_CAP=256" \
+             "GDEL_HOST_STAR_MIN=32" "GDEL_HOST_STAR_MIN=24" "GDEL_HOST_STAR_MIN=128 GDEL_HOST_STAR_CAP=1000000000"; do
+      tag=$(echo "$v" | tr ' =' '__')
+      echo "== s20a $v" | tee -a "$out/summary.txt"
+      # shellcheck disable=SC2086
+      (export $v; bench "s20a_$tag" 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3)
+    done
+    bench s20a_gen 150 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_SPLAY_DEBUG=1 GDEL_PROFILE=1 step s20a_debug 40 "$gb" --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    grep -E "largest working set|gdel3d repair:|host" /tmp/gpu-run-s20a_debug.log | head -40 | tee -a "$out/summary.txt"
+    bench s20a_u7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s20a_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s20b)  # session 20: s20a's binaries as gdel-bench-old; new = those plus the host path's gate (a star above 128)
+          # and the next active set's length left on the device. Three columns alternating, twice: old and new
+          # with session 19's host setting (128, no cap), new at its defaults; 10^6 and 10^7; profiles; 10^8
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    s19host="GDEL_HOST_STAR_MIN=128 GDEL_HOST_STAR_CAP=1000000000"
+    for n in 1000000 10000000; do
+      d=uniform,grid,sphere
+      [ "$n" = 10000000 ] && d=uniform
+      for r in 1 2; do
+        # shellcheck disable=SC2086
+        (export $s19host; step "s20b_old128_${n}_$r" 60 "$bin/gdel-bench-old" --dist $d --n $n --methods gdel3d-cuda-dev --repeat 3)
+        # shellcheck disable=SC2086
+        (export $s19host; bench "s20b_new128_${n}_$r" 60 --dist $d --n $n --methods gdel3d-cuda-dev --repeat 3)
+        bench "s20b_new_${n}_$r" 60 --dist $d --n $n --methods gdel3d-cuda-dev --repeat 3
+      done
+    done
+    GDEL_PROFILE=1 bench s20b_prof 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s20b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
