@@ -681,6 +681,20 @@ case "$plan" in
     GDEL_PROFILE=1 bench s20b_prof 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s20b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s20c)  # session 20, on an H100 (s20b's binaries): tests; 10^8 at the defaults (does it fit 80 GB?); then the
+          # one-wait change alone (old and new at 128, no cap) in four alternating rounds, and new at its defaults
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    GDEL_PROFILE=1 bench s20c_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    s19host="GDEL_HOST_STAR_MIN=128 GDEL_HOST_STAR_CAP=1000000000"
+    for r in 1 2 3 4; do
+      # shellcheck disable=SC2086
+      (export $s19host; step "s20c_old128_$r" 60 "$bin/gdel-bench-old" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5)
+      # shellcheck disable=SC2086
+      (export $s19host; bench "s20c_new128_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5)
+      bench "s20c_new_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
