@@ -134,9 +134,11 @@ struct Stats {
   // zero volume, on coplanar hull faces) dropped from the output
   std::int64_t repair_failed_vertices = 0, stars_built = 0, stars_flipflop = 0, stars_rebuilt = 0,
                stars_pulled = 0, splay_rounds = 0, splay_insertions = 0, flat_tets_removed = 0;
-  // gdel3d repair on the CUDA backend: stars with huge working sets (over 512 points: a
-  // point on a coplanar hull face) built on the host's cores, and the insertions made
-  // into such stars (over 1 024 triangles) on the host in the splaying rounds
+  // gdel3d repair on the CUDA backend: stars with large working sets (over 48 points, at
+  // most 4 per host thread per build, and only where one exceeds 128: points on a
+  // coplanar hull face) built on the host's cores, and the insertions made into such
+  // stars (over 96 triangles, the same cap, where one exceeds 256) on the host in the
+  // splaying rounds (docs/gdel3d.md)
   std::int64_t stars_built_on_host = 0, host_star_insertions = 0;
   // CPU backend, one point per round (Options::cpu_rounds = false): insertions undone
   // after meeting another thread's tets, then redone by one thread after their round
