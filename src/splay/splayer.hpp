@@ -456,9 +456,13 @@ class Splayer {
   // many triangles for the insertions): it first copies every point to the host
   // (host_geo), 320 MB at 10^7 points, which the uniform generator's few stars above 48
   // did not repay: its repair took 0.31 s instead of 0.08, 3.6 s instead of 1.1 at 10^8
-  // (bench/RESULTS.md, session 20). With GDEL_HOST_STAR_MIN set, no gate.
+  // (bench/RESULTS.md, session 20). GDEL_HOST_STAR_GATE=N sets it (tests); with
+  // GDEL_HOST_STAR_MIN set and no GDEL_HOST_STAR_GATE, no gate.
   static constexpr I64 kHostGate = 128;
-  static I64 host_gate() { return std::getenv("GDEL_HOST_STAR_MIN") ? host_build_min() : kHostGate; }
+  static I64 host_gate() {
+    if (const char* e = std::getenv("GDEL_HOST_STAR_GATE")) return std::max<I64>(0, std::atoll(e));
+    return std::getenv("GDEL_HOST_STAR_MIN") ? host_build_min() : kHostGate;
+  }
   // The groups j in [0, n) with size(j) > min, for the host, if the largest exceeds gate:
   // if more than host_star_cap() qualify, only the largest. min is raised to the size of
   // the largest one left out (ties at the cut stay too; all of them where the gate

@@ -78,7 +78,8 @@ inline void gdel3d_scale_cases(Backend b, std::initializer_list<std::size_t> siz
 // as the in-kernel work: forced here for every star over 8 points and every insertion
 // into a star of over 16 triangles (GDEL_HOST_STAR_MIN, no cap), on grid and sphere
 // points; both host paths must have run. With a cap of 3 stars per build or round
-// (GDEL_HOST_STAR_CAP) fewer stars go to the host, and the result is again the same.
+// (GDEL_HOST_STAR_CAP) fewer stars go to the host, and the result is again the same;
+// with the gate (GDEL_HOST_STAR_GATE) above every star, none goes, and again the same.
 inline void gdel3d_host_star_case(Backend b) {
   for (auto d : {gen::Distribution::Grid, gen::Distribution::Sphere}) {
     SCOPED_TRACE(std::string(gen::to_string(d)));
@@ -93,17 +94,28 @@ inline void gdel3d_host_star_case(Backend b) {
     ::setenv("GDEL_HOST_STAR_CAP", "3", 1);
     Triangulation capped = delaunay(pts, o);
     ::unsetenv("GDEL_HOST_STAR_CAP");
+    // the gate above every star: the host path never runs, and the kernel, whose
+    // threshold host_pick raises to the largest star, builds and serves them all
+    ::setenv("GDEL_HOST_STAR_GATE", "1000000000", 1);
+    Triangulation gated = delaunay(pts, o);
+    ::unsetenv("GDEL_HOST_STAR_GATE");
     ::unsetenv("GDEL_HOST_STAR_MIN");
     EXPECT_GT(host.stats.stars_built_on_host, 0);
     EXPECT_GT(host.stats.host_star_insertions, 0);
     EXPECT_GT(capped.stats.stars_built_on_host, 0);
     EXPECT_LT(capped.stats.stars_built_on_host, host.stats.stars_built_on_host);
+    EXPECT_EQ(gated.stats.stars_built_on_host, 0);
+    EXPECT_EQ(gated.stats.host_star_insertions, 0);
+    EXPECT_EQ(gated.stats.stars_built, host.stats.stars_built);
     expect_exact_delaunay(pts, host, b);
     expect_exact_delaunay(pts, capped, b);
+    expect_exact_delaunay(pts, gated, b);
     EXPECT_EQ(host.tets, base.tets);
     EXPECT_EQ(host.neighbors, base.neighbors);
     EXPECT_EQ(capped.tets, base.tets);
     EXPECT_EQ(capped.neighbors, base.neighbors);
+    EXPECT_EQ(gated.tets, base.tets);
+    EXPECT_EQ(gated.neighbors, base.neighbors);
   }
 }
 
