@@ -695,6 +695,22 @@ case "$plan" in
       bench "s20c_new_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     done
     ;;
+  s21a)  # session 21: gFlip3D's flips write each new tet whole from the record's fixed face pattern (write_flip), and
+          # the adjacency pass writes a new tet's face only where another flip took its neighbour. Old = 79d2393's
+          # gdel-bench. Tests; four alternating rounds at 10^6 (medians of 5), two at 10^7; step profiles at 10^7
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    for r in 1 2 3 4; do
+      step "s21a_old_$r" 60 "$bin/gdel-bench-old" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s21a_new_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    for r in 1 2; do
+      step "s21a_old7_$r" 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s21a_new7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    GDEL_PROFILE=1 step s21a_oldprof 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s21a_newprof 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -403,39 +403,103 @@ GDEL_HD int order_32(const Geo& g, FlipRec& r, double* work) {
   return 0;
 }
 
-// The new tets of a complete record (see FlipRec); returns their number.
+// New tet a of a complete record of type Type (1: 2-3, 2: 3-2; see FlipRec).
+template <int Type>
+GDEL_HD inline void flip_new_tet(const FlipRec& r, int a, vid_t nv[4]) {
+  if constexpr (Type == 1) {
+    nv[0] = r.v[a];
+    nv[1] = r.v[(a + 1) % 3];
+    nv[2] = r.v[4];
+    nv[3] = r.v[3];
+  } else {
+    nv[0] = r.v[a];
+    nv[1] = r.v[1 - a];
+    nv[2] = r.v[2];
+    nv[3] = r.v[3 + a];
+  }
+}
+// The new tets of a complete record; returns their number.
 GDEL_HD inline int flip_new_tets(const FlipRec& r, vid_t nv[3][4]) {
   if (r.type == 1) {
-    for (int k = 0; k < 3; ++k) {
-      nv[k][0] = r.v[k];
-      nv[k][1] = r.v[(k + 1) % 3];
-      nv[k][2] = r.v[4];
-      nv[k][3] = r.v[3];
-    }
+    for (int a = 0; a < 3; ++a) flip_new_tet<1>(r, a, nv[a]);
     return 3;
   }
-  const int order[2][4] = {{0, 1, 2, 3}, {1, 0, 2, 4}};
-  for (int a = 0; a < 2; ++a)
-    for (int l = 0; l < 4; ++l) nv[a][l] = r.v[order[a][l]];
+  for (int a = 0; a < 2; ++a) flip_new_tet<2>(r, a, nv[a]);
   return 2;
 }
 
-// True iff the 3 vertices f are all among the 4 of t.
-GDEL_HD inline bool has_face(const vid_t* t, const vid_t* f) {
-  int h = 0;
-  for (int q = 0; q < 3; ++q)
-    for (int z = 0; z < 4; ++z) h += (t[z] == f[q]);
-  return h == 3;
-}
-// Local index of the vertex of t that is not in face f (t must hold f).
-GDEL_HD inline int opposite_of_face(const vid_t* t, const vid_t* f) {
-  int l = 0;
-  for (int z = 0; z < 4; ++z) {
-    bool in = false;
-    for (int q = 0; q < 3; ++q) in = in || t[z] == f[q];
-    if (!in) l = z;
+// Face l of new tet a of a complete record of type Type, from the vertex orders of
+// FlipRec, flip_outputs and prop_tets. Internal (`inner`): face `face` of new tet `tet`.
+// External: the face of old tet in[`tet`] opposite the record's vertex v[`face`]. 2-3:
+// out[a] = (c_a, c_a+1, x, v); in[0] holds c0 c1 c2 v, in[1] c0 c1 c2 x. 3-2: out[0] =
+// (r0, r1, r2, eA), out[1] = (r1, r0, r2, eB); in[0] lacks r2, in[1] r0, in[2] r1, so
+// in[(j + 1) % 3] lacks r_j.
+struct FlipFace {
+  bool inner;
+  int tet, face;
+};
+template <int Type>
+GDEL_HD constexpr FlipFace flip_face(int a, int l) {
+  if constexpr (Type == 1) {
+    if (l == 0) return {true, (a + 1) % 3, 1};
+    if (l == 1) return {true, (a + 2) % 3, 0};
+    return {false, l - 2, (a + 2) % 3};  // l = 2: in in[0], opposite x; l = 3: in in[1], opposite v
+  } else {
+    if (l == 3) return {true, 1 - a, 3};
+    const int j = (a == 1 && l < 2) ? 1 - l : l;  // face l is opposite ring vertex r_j
+    return {false, (j + 1) % 3, a == 0 ? 4 : 3};  // opposite the edge's other end
   }
-  return l;
+}
+
+// Writes the new tets of flip record r (type Type) into slots out[]: each whole, with one
+// vector store each for its vertices, neighbours, their faces and face flags. An internal
+// face links two new tets (kInternal); an external one gets the neighbour of the old tet
+// there, and an entry (en: a << 2 | l; ef: o << 2 | the old tet's face; eo: that
+// neighbour's facet) for the adjacency pass, in (a, l) order. The old tets are read before
+// any slot is written (out[0], out[1] are in[0], in[1]).
+template <int Type>
+GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t out[3], std::uint8_t* en,
+                               std::uint8_t* ef, fid_t* eo) {
+  constexpr int no = Type == 1 ? 2 : 3, nn = 5 - no;
+  Tet ot[no];
+  tid_t on[no][4];
+  std::uint8_t of[no][4];
+#pragma unroll
+  for (int o = 0; o < no; ++o) {
+    ot[o] = m.tet[r.in[o]];
+    m.get_adj(r.in[o], on[o], of[o]);
+  }
+  int ne = 0;
+#pragma unroll
+  for (int a = 0; a < nn; ++a) {
+    tid_t nt[4];
+    std::uint8_t nf[4], fl[4];
+#pragma unroll
+    for (int l = 0; l < 4; ++l) {
+      const FlipFace x = flip_face<Type>(a, l);
+      if (x.inner) {
+        nt[l] = out[x.tet];
+        nf[l] = static_cast<std::uint8_t>(x.face);
+        fl[l] = mesh::kInternal;
+        continue;
+      }
+      const vid_t w = r.v[x.face];
+      const vid_t* tv = ot[x.tet].v;
+      const int lo = tv[0] == w ? 0 : tv[1] == w ? 1 : tv[2] == w ? 2 : 3;
+      nt[l] = on[x.tet][lo];
+      nf[l] = of[x.tet][lo];
+      fl[l] = 0;
+      en[ne] = static_cast<std::uint8_t>(a << 2 | l);
+      ef[ne] = static_cast<std::uint8_t>(x.tet << 2 | lo);
+      eo[ne] = nt[l] < 0 ? fid_t(-1) : pack_facet(nt[l], nf[l]);
+      ++ne;
+    }
+    Tet t;
+    flip_new_tet<Type>(r, a, t.v);
+    m.tet[out[a]] = t;
+    m.put_adj(out[a], nt, nf, fl);
+    m.state[out[a]] = mesh::kAlive | mesh::kChanged;
+  }
 }
 
 // Builds the record of accepted flip f (proposer A[flp[f]]); false if undecided.

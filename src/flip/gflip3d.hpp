@@ -1062,77 +1062,38 @@ class GFlip3D {
     std::uint8_t* en = ext_new.data();
     std::uint8_t* ef = ext_from.data();
     fid_t* eo = ext_old.data();
-    // (b) slots, vertices, internal links, external messages
+    // (b) slots and the new tets (write_flip): each written whole, its external faces
+    // first to the old tet's neighbour there; the adjacency pass below corrects those
+    // whose neighbour another flip of this iteration took, and links the others back.
     par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
-      FlipRec& r = rec[f];
-      vid_t nv[3][4];
-      const int nn = flip_new_tets(r, nv);
-      r.out[0] = r.in[0];
-      r.out[1] = r.in[1];
-      r.out[2] = r.type == 1 ? src.slot(o23[f]) : -1;
-      const int no = r.type == 1 ? 2 : 3;
-      // old tets (read before any slot is overwritten)
-      vid_t ov[3][4];
-      fid_t oopp[3][4];
-      for (int o = 0; o < no; ++o)
-        for (int l = 0; l < 4; ++l) {
-          ov[o][l] = m.tet[r.in[o]].v[l];
-          oopp[o][l] = m.opp(4 * std::int64_t(r.in[o]) + l);
-        }
-      for (int o = 0; o < no; ++o) mark[r.in[o]] = stamp | static_cast<std::uint64_t>(f);
-      int ne = 0;
-      for (int a = 0; a < nn; ++a) {
-        const tid_t sa = r.out[a];
-        for (int l = 0; l < 4; ++l) m.tet[sa].v[l] = nv[a][l];
-        m.state[sa] = mesh::kAlive | mesh::kChanged;
-        for (int l = 0; l < 4; ++l) {
-          vid_t fvx[3];
-          int c = 0;
-          for (int q = 0; q < 4; ++q)
-            if (q != l) fvx[c++] = nv[a][q];
-          // internal: another new tet holds the face
-          int other = -1;
-          for (int a2 = 0; a2 < nn && other < 0; ++a2)
-            if (a2 != a && has_face(nv[a2], fvx)) other = a2;
-          if (other >= 0) {
-            m.set_opp(4 * std::int64_t(sa) + l, pack_facet(r.out[other], opposite_of_face(nv[other], fvx)));
-            m.set_face_flags(sa, l, mesh::kInternal);
-            continue;
-          }
-          // external: the old tet that held it
-          for (int o = 0; o < no; ++o) {
-            if (!has_face(ov[o], fvx)) continue;
-            const int lo = opposite_of_face(ov[o], fvx);
-            en[6 * f + ne] = static_cast<std::uint8_t>(a << 2 | l);
-            ef[6 * f + ne] = static_cast<std::uint8_t>(o << 2 | lo);
-            eo[6 * f + ne] = oopp[o][lo];
-            ++ne;
-            m.set_face_flags(sa, l, 0);
-            break;
-          }
-        }
-      }
+      const FlipRec r = rec[f];
+      const bool t23 = r.type == 1;
+      const tid_t out[3] = {r.in[0], r.in[1], t23 ? src.slot(o23[f]) : tid_t(-1)};
+      for (int a = 0; a < 3; ++a) rec[f].out[a] = out[a];
+      for (int o = 0; o < (t23 ? 2 : 3); ++o) mark[r.in[o]] = stamp | static_cast<std::uint64_t>(f);
+      if (t23) write_flip<1>(m, r, out, en + 6 * f, ef + 6 * f, eo + 6 * f);
+      else write_flip<2>(m, r, out, en + 6 * f, ef + 6 * f, eo + 6 * f);
     });
     par::mark(ctx_, "flip: write tets");
-    // adjacency across external faces
+    // adjacency across external faces: a neighbour that no flip took links back to the
+    // new facet; one that flip g took is replaced by g's new facet there
     par::parallel_for(ctx_, 6 * nfl, [=] GDEL_LAMBDA(std::int64_t e) {
-      const fid_t nf = pack_facet(rec[e / 6].out[en[e] >> 2], en[e] & 3);
       fid_t nb = eo[e];
-      if (nb >= 0) {
-        const tid_t u = facet_tet(nb);
-        const int j = facet_face(nb);
-        const std::uint64_t mk = mark[u];
-        if ((mk & ~std::uint64_t(0xffffffff)) == stamp) {  // u was taken by flip g of this iteration
-          const std::int64_t g = static_cast<std::int64_t>(mk & 0xffffffff);
-          int k = 0;
-          while (k < 5 && pack_facet(rec[g].in[ef[6 * g + k] >> 2], ef[6 * g + k] & 3) != nb) ++k;
-          nb = pack_facet(rec[g].out[en[6 * g + k] >> 2], en[6 * g + k] & 3);
-        } else {
-          m.set_opp(4 * std::int64_t(u) + j, nf);
-          m.set_face_flags(u, j, 0);
-        }
+      if (nb < 0) return;  // the hull: the new tet already says so
+      const fid_t nf = pack_facet(rec[e / 6].out[en[e] >> 2], en[e] & 3);
+      const tid_t u = facet_tet(nb);
+      const int j = facet_face(nb);
+      const std::uint64_t mk = mark[u];
+      if ((mk & ~std::uint64_t(0xffffffff)) == stamp) {  // u was taken by flip g of this iteration
+        const std::int64_t g = static_cast<std::int64_t>(mk & 0xffffffff);
+        int k = 0;
+        while (k < 5 && pack_facet(rec[g].in[ef[6 * g + k] >> 2], ef[6 * g + k] & 3) != nb) ++k;
+        nb = pack_facet(rec[g].out[en[6 * g + k] >> 2], en[6 * g + k] & 3);
+        m.set_opp(4 * std::int64_t(facet_tet(nf)) + facet_face(nf), nb);
+      } else {
+        m.set_opp(4 * std::int64_t(u) + j, nf);
+        m.set_face_flags(u, j, 0);
       }
-      m.set_opp(4 * std::int64_t(facet_tet(nf)) + facet_face(nf), nb);
     });
     par::mark(ctx_, "flip: adjacency");
     ext_new.release();  // not needed past here: room for the next active set's sort
