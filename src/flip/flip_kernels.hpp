@@ -97,11 +97,10 @@ GDEL_HD inline int prop_other(int p) { return p & 3; }
 GDEL_HD inline vid_t apex_of(const MeshView& m, fid_t o) {
   return o < 0 ? kNoVertex : m.tet[facet_tet(o)].v[facet_face(o)];
 }
-// The apex across face i of tet b (vertices bv): the neighbour's vertex off the shared
-// face, found among its 4 vertices (one 16-byte load) without the neighbour's face
-// index (a second, dependent-free but separate load in the hot loops).
-GDEL_HD inline vid_t apex_across(const MeshView& m, tid_t b, const vid_t* bv, int i) {
-  const tid_t u = m.opp_tet(4 * std::int64_t(b) + i);
+// The apex across face i of a tet (vertices bv) whose neighbour there is u: u's vertex
+// off the shared face, found among its 4 vertices (one 16-byte load) without the
+// neighbour's face index (a second, dependent-free but separate load in the hot loops).
+GDEL_HD inline vid_t apex_in(const MeshView& m, tid_t u, const vid_t* bv, int i) {
   if (u < 0) return kNoVertex;
   const Tet ut = m.tet[u];
   const vid_t a = bv[face_vertex(i, 0)], c = bv[face_vertex(i, 1)], d = bv[face_vertex(i, 2)];
@@ -109,6 +108,10 @@ GDEL_HD inline vid_t apex_across(const MeshView& m, tid_t b, const vid_t* bv, in
   for (int k = 0; k < 3; ++k)
     if (ut.v[k] != a && ut.v[k] != c && ut.v[k] != d) x = ut.v[k];
   return x;
+}
+// The same, u being the neighbour of tet b across face i.
+GDEL_HD inline vid_t apex_across(const MeshView& m, tid_t b, const vid_t* bv, int i) {
+  return apex_in(m, m.opp_tet(4 * std::int64_t(b) + i), bv, i);
 }
 
 // The edges of face i of tet bv that block its 2-3 flip with apex x across the face:
@@ -158,10 +161,14 @@ GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, 
   if (!m.alive(b)) return -1;
   const Tet bt = m.tet[b];
   const vid_t* bv = bt.v;
+  tid_t nt[4];
+  std::uint8_t fl[4];
+  m.get_opp_tets(b, nt);
+  m.get_face_flags(b, fl);
   vid_t apex[4];
-  for (int i = 0; i < 4; ++i) apex[i] = apex_across(m, b, bv, i);
+  for (int i = 0; i < 4; ++i) apex[i] = apex_in(m, nt[i], bv, i);
   for (int i = 0; i < 4; ++i) {
-    if (apex[i] == kNoVertex || (m.face_flags(b, i) & mesh::kInternal)) continue;
+    if (apex[i] == kNoVertex || (fl[i] & mesh::kInternal)) continue;
     int s = g.insphere<Exact>(bv, apex[i], work);
     if (s == par::kUndecided) return kUndecidedResult;
     if (s <= 0) continue;  // locally Delaunay

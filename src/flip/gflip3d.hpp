@@ -315,11 +315,12 @@ class GFlip3D {
   // Per-tet auxiliary arrays follow the mesh capacity (exactly: no growth slack of
   // their own). Each is at its reset value between steps:
   //   aux_key_  0 — insertion: a tet's best point key; relocation: 1 + the first logged
-  //             flip that consumed the slot (flip DAG); flipping: (iteration + 1) << 32 |
-  //             flip index of the flip that took the tet (stale stamps never match a
-  //             later iteration; clear_marks() zeroes them before the other two uses)
-  //   aux_pick_ -1 — insertion: the split index of a split tet; flipping: the vote
-  //             (INT_MAX - smallest proposer, atomic max)
+  //             flip that consumed the slot (flip DAG); flipping: the vote,
+  //             vote_stamp() | INT_MAX - smallest proposer (atomic max), then
+  //             flip_stamp() | index of the flip that took the tet (stale stamps never
+  //             match a later iteration; clear_marks() zeroes them before the other uses)
+  //   aux_pick_ -1 — insertion: the split index of a split tet; non-optimal flips: the
+  //             vote of the proposals (INT_MAX - smallest position, atomic max)
   void grow_aux() {
     const std::size_t cap = static_cast<std::size_t>(mesh_.capacity());
     auto grow = [&](auto& buf, auto init) {
@@ -332,7 +333,13 @@ class GFlip3D {
     grow(aux_key_, std::uint64_t(0));
     grow(aux_pick_, std::int32_t(-1));
   }
-  // Zeroes aux_key_ after flips stamped it (before insertion or relocation reads it).
+  // aux_key_'s high word in flip iteration i (st_.flip_iterations): its votes 2 i + 1,
+  // its flips' stamps 2 i + 2, each above every earlier one and above 0 (clear_marks).
+  std::uint64_t vote_stamp() const {
+    return (2 * static_cast<std::uint64_t>(st_.flip_iterations & 0x3fffffff) + 1) << 32;
+  }
+  std::uint64_t flip_stamp() const { return vote_stamp() + (std::uint64_t(1) << 32); }
+  // Zeroes aux_key_ after votes or flips stamped it (before insertion or relocation reads it).
   void clear_marks() {
     if (!marks_dirty_) return;
     aux_key_.memset(0);
@@ -917,15 +924,19 @@ class GFlip3D {
     std::int32_t* plp = pl.data();
     par::select_indices_to(ctx_, static_cast<std::size_t>(na), plp, cn, is_proposer);
     par::mark(ctx_, "flip: select proposers");
-    // vote: the smallest proposer index wins each tet (atomic max of INT_MAX - index, so
-    // that -1 is the empty vote); accepted flips are disjoint
-    std::int32_t* vote = aux_pick_.data();
+    // vote: the smallest proposer index wins each tet, by an atomic max in aux_key_ of
+    // vote_stamp() | INT_MAX - index; accepted flips are disjoint. The stamp (this
+    // iteration's, above every earlier vote and flip stamp) spares a pass that would
+    // reset the votes.
+    std::uint64_t* vote = aux_key_.data();
+    marks_dirty_ = true;
+    const std::uint64_t vstamp = vote_stamp();
     par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
       const std::int64_t k = plp[j];
       if (pp[k] < 0) return;  // stuck
       tid_t ts[3];
       int nt = prop_tets(m, A[k], pp[k], ts);
-      for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], static_cast<std::int32_t>(INT_MAX - A[k]));
+      for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
     });
     Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(npb));
     std::int8_t* ap = acc.data();
@@ -934,15 +945,8 @@ class GFlip3D {
       tid_t ts[3];
       int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
       bool ok = nt > 0;
-      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == static_cast<std::int32_t>(INT_MAX - A[k]);
+      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == (vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
       ap[j] = ok ? 1 : 0;
-    });
-    par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
-      const std::int64_t k = plp[j];
-      if (pp[k] < 0) return;
-      tid_t ts[3];
-      int nt = prop_tets(m, A[k], pp[k], ts);
-      for (int l = 0; l < nt; ++l) vote[ts[l]] = -1;
     });
     Buffer<std::int32_t, B> fl(ctx_, static_cast<std::size_t>(npb));  // positions in pl, then in A
     std::int32_t* flp = fl.data();
@@ -1039,10 +1043,10 @@ class GFlip3D {
     // holds the new facet (en: a << 2 | face, for new tet out[a] of the record), the old
     // tet's facet it replaces (ef: o << 2 | face, for old tet in[o] of the record) and
     // that facet's neighbour (eo). A flip's old tets are
-    // stamped with (iteration, f) in aux_key_, so that a neighbour taken by another flip
+    // stamped with flip_stamp() | f in aux_key_, so that a neighbour taken by another flip
     // of this iteration finds its new facet among that flip's entries.
     std::uint64_t* mark = aux_key_.data();
-    const std::uint64_t stamp = static_cast<std::uint64_t>((st_.flip_iterations & 0x7fffffff) + 1) << 32;
+    const std::uint64_t stamp = flip_stamp();
     marks_dirty_ = true;
     Buffer<std::int8_t, B> und2(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(nfl, 1)));
     // flip kernel: (a) build records and new tets' vertices (3-2 ordering may need
@@ -1144,7 +1148,7 @@ class GFlip3D {
     par::mark(ctx_, "flip: next active set");
     if (with_log) log_iters_.push_back(static_cast<std::int64_t>(log_.size()));
     else log_.clear();
-    st_.flip_iterations++;  // also the stamp (aux_key_) of the next iteration's flips
+    st_.flip_iterations++;  // also the stamps (aux_key_) of the next iteration's votes and flips
     return nfl;
   }
 
@@ -1325,8 +1329,8 @@ class GFlip3D {
     std::int64_t ns = static_cast<std::int64_t>(  // (not const: nvcc, as above)
         par::select_indices(ctx_, static_cast<std::size_t>(n), sl, [=] GDEL_LAMBDA(std::int64_t k) { return pp[k] >= 0; }));
     if (ns == 0) return 0;
-    // one proposal per carrying tet: the smallest position wins (vote array as in
-    // commit_flips, reset after)
+    // one proposal per carrying tet: the smallest position wins (aux_pick_, an atomic
+    // max of INT_MAX - position, reset after)
     std::int32_t* vote = aux_pick_.data();
     par::parallel_for(ctx_, ns, [=] GDEL_LAMBDA(std::int64_t j) {
       par::atomic_max(vote + proposal_tet(pp[sl[j]]), static_cast<std::int32_t>(INT_MAX - j));

@@ -65,17 +65,26 @@ struct MeshView {
 
   // A tet's four neighbour tets, their faces and its face flags, each as one access (16,
   // 4 and 4 bytes: per tet the arrays are 16- and 4-byte aligned) instead of four.
-  GDEL_HD void get_adj(tid_t t, tid_t nt[4], std::uint8_t nf[4]) const {
-    const std::int64_t k = 4 * std::int64_t(t);
+  GDEL_HD void get_opp_tets(tid_t t, tid_t nt[4]) const {
 #if defined(__CUDA_ARCH__)
-    const int4 q = *reinterpret_cast<const int4*>(opp_t + k);
+    const int4 q = *reinterpret_cast<const int4*>(opp_t + 4 * std::int64_t(t));
     nt[0] = q.x, nt[1] = q.y, nt[2] = q.z, nt[3] = q.w;
-    const uchar4 b = *reinterpret_cast<const uchar4*>(opp_f + k);
-    nf[0] = b.x, nf[1] = b.y, nf[2] = b.z, nf[3] = b.w;
 #else
-    std::memcpy(nt, opp_t + k, 4 * sizeof(tid_t));
-    std::memcpy(nf, opp_f + k, 4);
+    std::memcpy(nt, opp_t + 4 * std::int64_t(t), 4 * sizeof(tid_t));
 #endif
+  }
+  GDEL_HD static void get4(const std::uint8_t* p, std::uint8_t b[4]) {
+#if defined(__CUDA_ARCH__)
+    const uchar4 q = *reinterpret_cast<const uchar4*>(p);
+    b[0] = q.x, b[1] = q.y, b[2] = q.z, b[3] = q.w;
+#else
+    std::memcpy(b, p, 4);
+#endif
+  }
+  GDEL_HD void get_face_flags(tid_t t, std::uint8_t fl[4]) const { get4(fflag + 4 * std::int64_t(t), fl); }
+  GDEL_HD void get_adj(tid_t t, tid_t nt[4], std::uint8_t nf[4]) const {
+    get_opp_tets(t, nt);
+    get4(opp_f + 4 * std::int64_t(t), nf);
   }
   GDEL_HD void put_adj(tid_t t, const tid_t nt[4], const std::uint8_t nf[4], const std::uint8_t fl[4]) const {
     const std::int64_t k = 4 * std::int64_t(t);
