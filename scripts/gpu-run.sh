@@ -130,6 +130,23 @@ flipcmp() {
   GDEL_PROFILE=1 bench "${tag}_prof" 60 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
 }
 
+# The flip kernels' resources (cuobjdump: registers, stack) and counters (ncu: 48 of
+# commit_flips' kernels of a uniform 10^6 run, past its first 1 200) for each binary
+# named: ncu_flips TAG BINARY...
+ncu_flips() {
+  local tag=$1
+  shift
+  local ncu
+  ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+  for b in "$@"; do
+    { echo "== $b"; cuobjdump -res-usage "$bin/$b" 2>&1 | grep -A1 commit_flips; } >>"$out/resusage.txt"
+    step "${tag}_ncu_$b" 120 "$ncu" --clock-control none -k regex:commit_flips --launch-skip 1200 --launch-count 48 \
+      --csv --metrics gpu__time_duration.sum,dram__bytes_read.sum,dram__bytes_write.sum,launch__registers_per_thread,sm__warps_active.avg.pct_of_peak_sustained_active,l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum,l1tex__t_bytes_pipe_lsu_mem_local_op_st.sum,launch__grid_size \
+      "$bin/$b" --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    cp "/tmp/gpu-run-${tag}_ncu_$b.log" "$out/ncu_$b.csv" 2>/dev/null
+  done
+}
+
 case "$plan" in
   tests)  # the GPU tests of gstar4d and its stages, and the gdel3d regression tests
     step star_stage 120 "$tbin/gpu_star_stage"
@@ -710,6 +727,7 @@ case "$plan" in
     done
     GDEL_PROFILE=1 step s21a_oldprof 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s21a_newprof 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    ncu_flips s21a gdel-bench-old gdel-bench
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
