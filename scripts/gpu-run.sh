@@ -140,7 +140,7 @@ ncu_flips() {
   ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
   for b in "$@"; do
     { echo "== $b"; cuobjdump -res-usage "$bin/$b" 2>&1 | grep -A1 commit_flips; } >>"$out/resusage.txt"
-    step "${tag}_ncu_$b" 120 "$ncu" --clock-control none -k regex:commit_flips --launch-skip 1200 --launch-count 48 \
+    step "${tag}_ncu_$b" 120 "$ncu" --clock-control none --kernel-name-base mangled -k regex:commit_flips --launch-skip 1200 --launch-count 48 \
       --csv --metrics gpu__time_duration.sum,dram__bytes_read.sum,dram__bytes_write.sum,launch__registers_per_thread,sm__warps_active.avg.pct_of_peak_sustained_active,l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum,l1tex__t_bytes_pipe_lsu_mem_local_op_st.sum,launch__grid_size \
       "$bin/$b" --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     cp "/tmp/gpu-run-${tag}_ncu_$b.log" "$out/ncu_$b.csv" 2>/dev/null
@@ -728,6 +728,22 @@ case "$plan" in
     GDEL_PROFILE=1 step s21a_oldprof 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s21a_newprof 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     ncu_flips s21a gdel-bench-old gdel-bench
+    ;;
+  s21b)  # session 21: B = A plus the votes stamped with the iteration (no reset pass) and propose's vector loads;
+          # old = A (s21a's new). Tests; four alternating rounds at 10^6, two at 10^7; profile; ncu; 10^8 last
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    for r in 1 2 3 4; do
+      step "s21b_old_$r" 60 "$bin/gdel-bench-old" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s21b_new_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    for r in 1 2; do
+      step "s21b_old7_$r" 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s21b_new7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    GDEL_PROFILE=1 bench s21b_newprof 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    ncu_flips s21b gdel-bench
+    GDEL_PROFILE=1 bench s21b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
