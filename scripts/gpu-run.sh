@@ -107,12 +107,12 @@ pathlib.Path(sys.argv[2]).write_text(json.dumps(rows, indent=1))
 PY
 }
 
-# old / new binary alternating, twice, on the same arguments: alternate TAG ARGS...
-# (gdel-bench-old beside gdel-bench in the binaries' folder)
+# old / new binary alternating, ROUNDS times (default 2), on the same arguments:
+# alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
 alternate() {
   local tag=$1
   shift
-  for r in 1 2; do
+  for r in $(seq "${ROUNDS:-2}"); do
     step "${tag}_old$r" 60 "$bin/gdel-bench-old" "$@"
     bench "${tag}_new$r" 60 "$@"
   done
@@ -717,14 +717,8 @@ case "$plan" in
           # gdel-bench. Tests; four alternating rounds at 10^6 (medians of 5), two at 10^7; step profiles at 10^7
     step gflip3d 150 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
-    for r in 1 2 3 4; do
-      step "s21a_old_$r" 60 "$bin/gdel-bench-old" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      bench "s21a_new_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
-    for r in 1 2; do
-      step "s21a_old7_$r" 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-      bench "s21a_new7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    done
+    ROUNDS=4 alternate s21a --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    alternate s21a_7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_PROFILE=1 step s21a_oldprof 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s21a_newprof 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     ncu_flips s21a gdel-bench-old gdel-bench
@@ -733,14 +727,8 @@ case "$plan" in
           # old = A (s21a's new). Tests; four alternating rounds at 10^6, two at 10^7; profile; ncu; 10^8 last
     step gflip3d 150 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
-    for r in 1 2 3 4; do
-      step "s21b_old_$r" 60 "$bin/gdel-bench-old" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      bench "s21b_new_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
-    for r in 1 2; do
-      step "s21b_old7_$r" 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-      bench "s21b_new7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    done
+    ROUNDS=4 alternate s21b --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    alternate s21b_7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_PROFILE=1 bench s21b_newprof 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     ncu_flips s21b gdel-bench
     GDEL_PROFILE=1 bench s21b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
