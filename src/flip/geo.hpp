@@ -131,9 +131,8 @@ struct Geo {
         return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
       }
     }
-    vid_t u[4];
-    for (int i = 0; i < 4; ++i) u[i] = v[i];
-    if (j < 4) u[j] = v[4];
+    vid_t u[4];  // (∞'s slot by a compare per slot: u[j] would put u in the stack)
+    for (int i = 0; i < 4; ++i) u[i] = i == j ? v[4] : v[i];
     int s;
     if constexpr (Exact) {
       s = geom::orient3d_sos(p(u[0]), p(u[1]), p(u[2]), p(u[3]), sid[u[0]], sid[u[1]], sid[u[2]], sid[u[3]], work);
@@ -153,7 +152,9 @@ struct Geo {
   GDEL_HD int insphere(const vid_t* t, vid_t e, double* work) const {
     if (e == inf) return -1;
     int j = inf_slot(t, inf);
-    if (j >= 0) return orient<Exact>(t[face_vertex(j, 0)], t[face_vertex(j, 1)], t[face_vertex(j, 2)], e, work);
+    if (j >= 0)
+      return orient<Exact>(pick4(t, face_vertex(j, 0)), pick4(t, face_vertex(j, 1)), pick4(t, face_vertex(j, 2)), e,
+                           work);
     if constexpr (Exact) {
       if (!work && !finite_scratch_free()) return par::kUndecided;
       return geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]], sid[t[2]],
