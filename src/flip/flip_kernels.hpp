@@ -103,7 +103,7 @@ GDEL_HD inline vid_t apex_of(const MeshView& m, fid_t o) {
 GDEL_HD inline vid_t apex_in(const MeshView& m, tid_t u, const vid_t* bv, int i) {
   if (u < 0) return kNoVertex;
   const Tet ut = m.tet[u];
-  const vid_t a = bv[face_vertex(i, 0)], c = bv[face_vertex(i, 1)], d = bv[face_vertex(i, 2)];
+  const vid_t a = pick4(bv, face_vertex(i, 0)), c = pick4(bv, face_vertex(i, 1)), d = pick4(bv, face_vertex(i, 2));
   vid_t x = ut.v[3];
   for (int k = 0; k < 3; ++k)
     if (ut.v[k] != a && ut.v[k] != c && ut.v[k] != d) x = ut.v[k];
@@ -123,7 +123,7 @@ template <bool Exact>
 GDEL_HD int flip23_blockers(const Geo& g, const vid_t* bv, int i, vid_t x, bool all_edges, double* work) {
   int mask = 0;
   for (int k = 0; k < 3 && (all_edges || mask == 0); ++k) {
-    int sk = g.orient<Exact>(bv[face_vertex(i, k)], bv[face_vertex(i, (k + 1) % 3)], x, bv[i], work);
+    int sk = g.orient<Exact>(pick4(bv, face_vertex(i, k)), pick4(bv, face_vertex(i, (k + 1) % 3)), x, pick4(bv, i), work);
     if (sk == par::kUndecided) return kUndecidedResult;
     if (sk <= 0) mask |= 1 << k;
   }
@@ -134,16 +134,13 @@ GDEL_HD int flip23_blockers(const Geo& g, const vid_t* bv, int i, vid_t x, bool 
 // flip proposal, -1 when neither flip is valid (stuck), or kUndecidedResult.
 template <bool Exact>
 GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, double* work) {
-  const vid_t x = apex[i];
+  const vid_t x = pick4(apex, i), bi = pick4(bv, i);
   // 3-2: the edge of face i opposite corner k has degree 3 iff face k's apex is x.
   for (int k = 0; k < 4; ++k) {
-    if (k == i || apex[k] != x) continue;
-    vid_t e[2];
-    int ne = 0;
-    for (int l = 0; l < 4; ++l)
-      if (l != i && l != k) e[ne++] = bv[l];
-    int s0 = g.orient<Exact>(bv[i], bv[k], x, e[0], work);
-    int s1 = g.orient<Exact>(bv[i], bv[k], x, e[1], work);
+    if (k == i || pick4(apex, k) != x) continue;
+    const vid_t bk = pick4(bv, k), e0 = pick4(bv, other_corner(i, k, 0)), e1 = pick4(bv, other_corner(i, k, 1));
+    int s0 = g.orient<Exact>(bi, bk, x, e0, work);
+    int s1 = g.orient<Exact>(bi, bk, x, e1, work);
     if (s0 == par::kUndecided || s1 == par::kUndecided) return kUndecidedResult;
     if (s0 != s1) return (2 << 4) | (i << 2) | k;
   }
@@ -168,8 +165,9 @@ GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, 
   vid_t apex[4];
   for (int i = 0; i < 4; ++i) apex[i] = apex_in(m, nt[i], bv, i);
   for (int i = 0; i < 4; ++i) {
-    if (apex[i] == kNoVertex || (fl[i] & mesh::kInternal)) continue;
-    int s = g.insphere<Exact>(bv, apex[i], work);
+    const vid_t ai = pick4(apex, i);
+    if (ai == kNoVertex || (pick4(fl, i) & mesh::kInternal)) continue;
+    int s = g.insphere<Exact>(bv, ai, work);
     if (s == par::kUndecided) return kUndecidedResult;
     if (s <= 0) continue;  // locally Delaunay
     const std::int64_t r = f(bv, apex, i);
@@ -383,17 +381,16 @@ GDEL_HD inline void flip_outputs(const MeshView& m, tid_t b, int prop, FlipRec& 
   const vid_t x = apex_across(m, b, bv, i);
   r.type = prop_type(prop);
   if (r.type == 1) {
-    for (int k = 0; k < 3; ++k) r.v[k] = bv[face_vertex(i, k)];
-    r.v[3] = bv[i];
+    for (int k = 0; k < 3; ++k) r.v[k] = pick4(bv, face_vertex(i, k));
+    r.v[3] = pick4(bv, i);
     r.v[4] = x;
     return;
   }
   const int k = prop_other(prop);
-  int ne = 3;
-  for (int l = 0; l < 4; ++l)
-    if (l != i && l != k) r.v[ne++] = bv[l];
-  r.v[0] = bv[i];
-  r.v[1] = bv[k];
+  r.v[3] = pick4(bv, other_corner(i, k, 0));
+  r.v[4] = pick4(bv, other_corner(i, k, 1));
+  r.v[0] = pick4(bv, i);
+  r.v[1] = pick4(bv, k);
   r.v[2] = x;
 }
 
@@ -458,15 +455,30 @@ GDEL_HD constexpr FlipFace flip_face(int a, int l) {
   }
 }
 
+// A flip's six external faces, for the adjacency pass (GFlip3D::commit_flips): entry e
+// of flip f is new tet out[a]'s face l, which replaces old tet in[o]'s face lo, whose
+// neighbour there was tet eot (kNoTet: the hull) across its face j. code packs a << 2 | l
+// (bits 0-3), o << 2 | lo (bits 4-7) and j (bits 8-9).
+struct ExtFaces {
+  std::uint16_t* code;
+  tid_t* eot;
+};
+GDEL_HD inline int ext_new_tet(std::uint16_t c) { return (c >> 2) & 3; }
+GDEL_HD inline int ext_new_face(std::uint16_t c) { return c & 3; }
+GDEL_HD inline int ext_old_tet(std::uint16_t c) { return (c >> 6) & 3; }
+GDEL_HD inline int ext_old_face(std::uint16_t c) { return (c >> 4) & 3; }
+GDEL_HD inline int ext_nb_face(std::uint16_t c) { return (c >> 8) & 3; }
+
 // Writes the new tets of flip record r (type Type) into slots out[]: each whole, with one
 // vector store each for its vertices, neighbours, their faces and face flags. An internal
 // face links two new tets (kInternal); an external one gets the neighbour of the old tet
-// there, and an entry (en: a << 2 | l; ef: o << 2 | the old tet's face; eo: that
-// neighbour's facet) for the adjacency pass, in (a, l) order. The old tets are read before
-// any slot is written (out[0], out[1] are in[0], in[1]).
+// there, and an entry for the adjacency pass (ExtFaces, from position `at`, in (a, l)
+// order). The old tets are read before any slot is written (out[0], out[1] are in[0],
+// in[1]). Each old tet's `mark` is set to `stamp` (the adjacency pass finds the flip that
+// took a neighbour by it).
 template <int Type>
-GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t out[3], std::uint8_t* en,
-                               std::uint8_t* ef, fid_t* eo) {
+GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t out[3], std::uint64_t* mark,
+                               std::uint64_t stamp, const ExtFaces& ext, std::int64_t at) {
   constexpr int no = Type == 1 ? 2 : 3, nn = 5 - no;
   Tet ot[no];
   tid_t on[no][4];
@@ -475,6 +487,7 @@ GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t 
   for (int o = 0; o < no; ++o) {
     ot[o] = m.tet[r.in[o]];
     m.get_adj(r.in[o], on[o], of[o]);
+    mark[r.in[o]] = stamp;
   }
   int ne = 0;
 #pragma unroll
@@ -490,15 +503,23 @@ GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t 
         fl[l] = mesh::kInternal;
         continue;
       }
+      // the old tet's face opposite w: found by compile-time indices (a run-time index
+      // into on/of would put them in the stack)
       const vid_t w = r.v[x.face];
       const vid_t* tv = ot[x.tet].v;
-      const int lo = tv[0] == w ? 0 : tv[1] == w ? 1 : tv[2] == w ? 2 : 3;
-      nt[l] = on[x.tet][lo];
-      nf[l] = of[x.tet][lo];
+      int lo = 3;
+      nt[l] = on[x.tet][3];
+      nf[l] = of[x.tet][3];
+#pragma unroll
+      for (int c = 2; c >= 0; --c)
+        if (tv[c] == w) {
+          lo = c;
+          nt[l] = on[x.tet][c];
+          nf[l] = of[x.tet][c];
+        }
       fl[l] = 0;
-      en[ne] = static_cast<std::uint8_t>(a << 2 | l);
-      ef[ne] = static_cast<std::uint8_t>(x.tet << 2 | lo);
-      eo[ne] = nt[l] < 0 ? fid_t(-1) : pack_facet(nt[l], nf[l]);
+      ext.code[at + ne] = static_cast<std::uint16_t>(a << 2 | l | (x.tet << 2 | lo) << 4 | (nf[l] & 3) << 8);
+      ext.eot[at + ne] = nt[l];
       ++ne;
     }
     Tet t;
@@ -509,14 +530,23 @@ GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t 
   }
 }
 
-// Builds the record of accepted flip f (proposer A[flp[f]]); false if undecided.
-struct BuildFlipRecord {
+// Executes accepted flip f (proposer A[flp[f]]): its record, with the new tets' slots
+// (in[0], in[1], and for a 2-3 flip the claimed slot src.slot(o23[f])), into rec[f], and
+// its new tets (write_flip: old tets stamped with stamp | f, external faces into ext from
+// 6 f); false, before anything is written, if undecided. One pass: the record's old tets
+// are still in cache when their successors are written (bench/RESULTS.md, session 22).
+struct ExecuteFlip {
   MeshView m;
   Geo g;
   const tid_t* A;
   const std::int32_t* flp;
   const std::int32_t* pp;
   FlipRec* rec;
+  mesh::SlotSource src;
+  const std::int32_t* o23;
+  std::uint64_t* mark;
+  std::uint64_t stamp;
+  ExtFaces ext;
   template <bool Exact>
   GDEL_HD bool run(std::int64_t f, double* work) const {
     const tid_t b = A[flp[f]];
@@ -526,8 +556,15 @@ struct BuildFlipRecord {
     if (r.type == 2 && order_32<Exact>(g, r, work) == kUndecidedResult) return false;
     tid_t ts[3];
     const int nt = prop_tets(m, b, p, ts);
+    const bool t23 = r.type == 1;
     for (int l = 0; l < 3; ++l) r.in[l] = l < nt ? ts[l] : -1;
+    r.out[0] = r.in[0];
+    r.out[1] = r.in[1];
+    r.out[2] = t23 ? src.slot(o23[f]) : tid_t(-1);
     rec[f] = r;
+    const std::uint64_t mk = stamp | static_cast<std::uint64_t>(f);
+    if (t23) write_flip<1>(m, r, r.out, mark, mk, ext, 6 * f);
+    else write_flip<2>(m, r, r.out, mark, mk, ext, 6 * f);
     return true;
   }
 };

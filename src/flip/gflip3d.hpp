@@ -78,6 +78,12 @@ struct FlipConfig {
   // entries, records, next active set), which at 10^8 points would otherwise reach
   // 17 GB in the largest iterations. GDEL_FLIPS_PER_ITERATION sets it (read by run()).
   std::int64_t max_flips_per_iteration = std::int64_t(1) << 24;
+  // On the GPU the propose and flip kernels (fast passes) keep 3 and 4 blocks of 256
+  // threads resident per SM: ptxas caps their registers at 80 and 64 (no spills; they
+  // wait on scattered loads and want warps in flight more than registers). false leaves
+  // the registers to ptxas (2-3 blocks). Test knob GDEL_RESIDENT_BLOCKS=0
+  // (bench/RESULTS.md, session 22).
+  bool resident_blocks = true;
 };
 
 // The fast/exact split of the parallel layer with the predicates' scratch size. exact
@@ -85,11 +91,12 @@ struct FlipConfig {
 // without a scratch (par::fast_then_exact_tiered, Geo::int_points).
 // With `tally` (a counter in backend memory) the count of exact items goes there and the
 // host is not waited for; max_threads > 0 then caps the scratch threads (par::fast_then_exact).
-template <class B, class Fast, class Exact>
+// MinBlocks: see par::fast_then_exact_tiered.
+template <int MinBlocks = 0, class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, const Geo& g, std::int64_t n, std::int8_t* undecided, Fast fast,
                              Exact exact, std::int64_t* tally = nullptr, std::int64_t max_threads = -1) {
-  return par::fast_then_exact_tiered(ctx, n, undecided, fast, exact, geom::kPredicateWork, g.finite_scratch_free(),
-                                     tally, max_threads);
+  return par::fast_then_exact_tiered<MinBlocks>(ctx, n, undecided, fast, exact, geom::kPredicateWork,
+                                                g.finite_scratch_free(), tally, max_threads);
 }
 
 template <class B>
@@ -117,6 +124,7 @@ class GFlip3D {
   void run() {
     debug_ = std::getenv("GDEL_CHECK_MESH") != nullptr;
     if (const char* e = std::getenv("GDEL_FLIP_LOG_RECORDS")) cfg_.log_records = std::max<long long>(1, std::atoll(e));
+    if (const char* e = std::getenv("GDEL_RESIDENT_BLOCKS")) cfg_.resident_blocks = std::atoi(e) != 0;
     if (const char* e = std::getenv("GDEL_FLIPS_PER_ITERATION"))
       cfg_.max_flips_per_iteration = std::max<long long>(1, std::atoll(e));
     trace_ = std::getenv("GDEL_FLIP_TRACE") != nullptr;
@@ -857,24 +865,26 @@ class GFlip3D {
     Buffer<std::int32_t, B> prop(ctx_, static_cast<std::size_t>(na));
     std::int32_t* pp = prop.data();
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(na));
-    st_.exact_evaluations += fast_then_exact(
-        ctx_, g, na, und.data(),
-        [=] GDEL_LAMBDA(std::int64_t k) {
-          if (alen && k >= *alen) {
-            pp[k] = -1;  // past the active set: no proposal
-            return true;
-          }
-          int p = propose_flip<false>(g, m, A[k], nullptr);
-          pp[k] = p;
-          return p != kUndecidedResult;
-        },
-        [=] GDEL_LAMBDA(std::int64_t k, double* work) {
-          const int p = propose_flip<true>(g, m, A[k], work);
-          if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
-          pp[k] = p;
-          return true;
-        },
-        exact_tally(), scratch_threads());
+    auto fast = [=] GDEL_LAMBDA(std::int64_t k) {
+      if (alen && k >= *alen) {
+        pp[k] = -1;  // past the active set: no proposal
+        return true;
+      }
+      int p = propose_flip<false>(g, m, A[k], nullptr);
+      pp[k] = p;
+      return p != kUndecidedResult;
+    };
+    auto exact = [=] GDEL_LAMBDA(std::int64_t k, double* work) {
+      const int p = propose_flip<true>(g, m, A[k], work);
+      if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
+      pp[k] = p;
+      return true;
+    };
+    // (the fast kernel at one of two occupancies: FlipConfig::resident_blocks)
+    if (cfg_.resident_blocks)
+      st_.exact_evaluations += fast_then_exact<3>(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
+    else
+      st_.exact_evaluations += fast_then_exact(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
     par::mark(ctx_, "flip: propose");
     und.release();
     active_deferred_ = false;
@@ -1039,70 +1049,59 @@ class GFlip3D {
     if (log0 == 0 && static_cast<std::size_t>(nfl) > log_.capacity()) log_.release();  // no copy to keep
     log_.resize(static_cast<std::size_t>(log0 + nfl));
     FlipRec* rec = log_.data() + log0;
-    // Every flip has 6 external faces (2-3: 2 old tets x 3; 3-2: 3 x 2). Entry 6f + e
-    // holds the new facet (en: a << 2 | face, for new tet out[a] of the record), the old
-    // tet's facet it replaces (ef: o << 2 | face, for old tet in[o] of the record) and
-    // that facet's neighbour (eo). A flip's old tets are
-    // stamped with flip_stamp() | f in aux_key_, so that a neighbour taken by another flip
-    // of this iteration finds its new facet among that flip's entries.
+    // Every flip has 6 external faces (2-3: 2 old tets x 3; 3-2: 3 x 2): entries 6f..6f+5
+    // of `ext` (flip_kernels.hpp's ExtFaces: which new facet replaces which old one, and
+    // the old neighbour there). A flip's old tets are stamped with flip_stamp() | f in
+    // aux_key_, so that a neighbour taken by another flip of this iteration finds its new
+    // facet among that flip's entries.
     std::uint64_t* mark = aux_key_.data();
     const std::uint64_t stamp = flip_stamp();
     marks_dirty_ = true;
+    Buffer<std::uint16_t, B> ext_code(ctx_, static_cast<std::size_t>(6 * nfl));
+    Buffer<tid_t, B> ext_tet(ctx_, static_cast<std::size_t>(6 * nfl));
+    const ExtFaces ext{ext_code.data(), ext_tet.data()};
     Buffer<std::int8_t, B> und2(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(nfl, 1)));
-    // flip kernel: (a) build records and new tets' vertices (3-2 ordering may need
-    // exact orientation); (b) write. Pass (a) is split fast/exact.
-    const BuildFlipRecord bfr{m, g, A, flp, pp, rec};
-    st_.exact_evaluations += fast_then_exact(
-        ctx_, g, nfl, und2.data(), [=] GDEL_LAMBDA(std::int64_t f) { return bfr.template run<false>(f, nullptr); },
-        [=] GDEL_LAMBDA(std::int64_t f, double* work) { return bfr.template run<true>(f, work); }, exact_tally(),
-        scratch_threads());
-    par::mark(ctx_, "flip: records");
+    // The flips, each in one thread (ExecuteFlip): its record (a 3-2 flip's vertex order
+    // may need an exact orientation: split fast/exact), its slots and its new tets, each
+    // written whole, its external faces first to the old tet's neighbour there; the
+    // adjacency pass below corrects those whose neighbour another flip of this iteration
+    // took, and links the others back.
+    const ExecuteFlip xf{m, g, A, flp, pp, rec, src, o23, mark, stamp, ext};
+    auto xfast = [=] GDEL_LAMBDA(std::int64_t f) { return xf.template run<false>(f, nullptr); };
+    auto xexact = [=] GDEL_LAMBDA(std::int64_t f, double* work) { return xf.template run<true>(f, work); };
+    if (cfg_.resident_blocks)
+      st_.exact_evaluations += fast_then_exact<4>(ctx_, g, nfl, und2.data(), xfast, xexact, exact_tally(), scratch_threads());
+    else
+      st_.exact_evaluations += fast_then_exact(ctx_, g, nfl, und2.data(), xfast, xexact, exact_tally(), scratch_threads());
+    par::mark(ctx_, "flip: records + write tets");
     prop.release();  // (the codes and the accepted list are the records' now)
     fl.release();
     und2.release();
-    Buffer<std::uint8_t, B> ext_new(ctx_, static_cast<std::size_t>(6 * nfl));
-    Buffer<std::uint8_t, B> ext_from(ctx_, static_cast<std::size_t>(6 * nfl));
-    Buffer<fid_t, B> ext_old(ctx_, static_cast<std::size_t>(6 * nfl));
-    std::uint8_t* en = ext_new.data();
-    std::uint8_t* ef = ext_from.data();
-    fid_t* eo = ext_old.data();
-    // (b) slots and the new tets (write_flip): each written whole, its external faces
-    // first to the old tet's neighbour there; the adjacency pass below corrects those
-    // whose neighbour another flip of this iteration took, and links the others back.
-    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
-      const FlipRec r = rec[f];
-      const bool t23 = r.type == 1;
-      const tid_t out[3] = {r.in[0], r.in[1], t23 ? src.slot(o23[f]) : tid_t(-1)};
-      for (int a = 0; a < 3; ++a) rec[f].out[a] = out[a];
-      for (int o = 0; o < (t23 ? 2 : 3); ++o) mark[r.in[o]] = stamp | static_cast<std::uint64_t>(f);
-      if (t23) write_flip<1>(m, r, out, en + 6 * f, ef + 6 * f, eo + 6 * f);
-      else write_flip<2>(m, r, out, en + 6 * f, ef + 6 * f, eo + 6 * f);
-    });
-    par::mark(ctx_, "flip: write tets");
     // adjacency across external faces: a neighbour that no flip took links back to the
-    // new facet; one that flip g took is replaced by g's new facet there
+    // new facet; one that flip h took is replaced by h's new facet there
+    const std::uint16_t* ec = ext_code.data();
+    const tid_t* et = ext_tet.data();
     par::parallel_for(ctx_, 6 * nfl, [=] GDEL_LAMBDA(std::int64_t e) {
-      fid_t nb = eo[e];
-      if (nb < 0) return;  // the hull: the new tet already says so
-      const fid_t nf = pack_facet(rec[e / 6].out[en[e] >> 2], en[e] & 3);
-      const tid_t u = facet_tet(nb);
-      const int j = facet_face(nb);
+      const tid_t u = et[e];
+      if (u < 0) return;  // the hull: the new tet already says so
+      const std::uint16_t c = ec[e];
+      const int j = ext_nb_face(c);
+      const tid_t mine = rec[e / 6].out[ext_new_tet(c)];
       const std::uint64_t mk = mark[u];
-      if ((mk & ~std::uint64_t(0xffffffff)) == stamp) {  // u was taken by flip g of this iteration
-        const std::int64_t g = static_cast<std::int64_t>(mk & 0xffffffff);
-        int k = 0;
-        while (k < 5 && pack_facet(rec[g].in[ef[6 * g + k] >> 2], ef[6 * g + k] & 3) != nb) ++k;
-        nb = pack_facet(rec[g].out[en[6 * g + k] >> 2], en[6 * g + k] & 3);
-        m.set_opp(4 * std::int64_t(facet_tet(nf)) + facet_face(nf), nb);
+      if ((mk & ~std::uint64_t(0xffffffff)) == stamp) {  // u was taken by flip h of this iteration
+        const std::int64_t h = static_cast<std::int64_t>(mk & 0xffffffff);
+        int k = 0;  // h's entry for u's face j
+        while (k < 5 && !(ext_old_face(ec[6 * h + k]) == j && rec[h].in[ext_old_tet(ec[6 * h + k])] == u)) ++k;
+        const std::uint16_t ck = ec[6 * h + k];
+        m.set_opp(4 * std::int64_t(mine) + ext_new_face(c), pack_facet(rec[h].out[ext_new_tet(ck)], ext_new_face(ck)));
       } else {
-        m.set_opp(4 * std::int64_t(u) + j, nf);
+        m.set_opp(4 * std::int64_t(u) + j, pack_facet(mine, ext_new_face(c)));
         m.set_face_flags(u, j, 0);
       }
     });
     par::mark(ctx_, "flip: adjacency");
-    ext_new.release();  // not needed past here: room for the next active set's sort
-    ext_from.release();
-    ext_old.release();
+    ext_code.release();  // not needed past here: room for the next active set's sort
+    ext_tet.release();
     // 3-2 flips free their third slot, in flip order (deterministic free stack)
     if (nfl > n23) {
       Buffer<tid_t, B> freed(ctx_, static_cast<std::size_t>(nfl - n23));
