@@ -733,6 +733,31 @@ case "$plan" in
     ncu_flips s21b gdel-bench
     GDEL_PROFILE=1 bench s21b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s22a)  # session 22: register-only face tables and selects (no stack in the flip kernels), records and
+          # write tets fused (ExecuteFlip), compact external-face entries, the fast passes of propose and
+          # ExecuteFlip at 3 and 4 resident blocks; old = s21b's code (edbea9f). Tests; resources; four
+          # alternating rounds at 10^6, two at 10^7; resident blocks off against on; profile; reorder
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    for b in gdel-bench-old gdel-bench; do
+      { echo "== $b"; cuobjdump -res-usage "$bin/$b" 2>&1 | grep -A1 -E 'commit_flips|flip_iteration'; } >>"$out/resusage.txt"
+    done
+    ROUNDS=4 alternate s22a --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    alternate s22a_7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    for r in 1 2; do
+      GDEL_RESIDENT_BLOCKS=0 bench "s22a_rb0_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s22a_rb1_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    GDEL_PROFILE=1 bench s22a_prof 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_RESIDENT_BLOCKS=0 bench s22a_prof_rb0 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s22b)  # session 22, second call: tet reordering (Options::reorder_tets) at 10^7 and 10^6; 10^8 last
+    for r in 1 2; do
+      GDEL_TET_REORDER=1 bench "s22b_reorder_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s22b_plain_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    GDEL_PROFILE=1 bench s22b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
