@@ -79,10 +79,11 @@ struct FlipConfig {
   // 17 GB in the largest iterations. GDEL_FLIPS_PER_ITERATION sets it (read by run()).
   std::int64_t max_flips_per_iteration = std::int64_t(1) << 24;
   // On the GPU the propose and flip kernels (fast passes) keep 3 and 4 blocks of 256
-  // threads resident per SM: ptxas caps their registers at 80 and 64 (no spills; they
-  // wait on scattered loads and want warps in flight more than registers). false leaves
-  // the registers to ptxas (2-3 blocks). Test knob GDEL_RESIDENT_BLOCKS=0
-  // (bench/RESULTS.md, session 22).
+  // threads resident per SM: ptxas caps their registers at 80 and 64 (more warps in
+  // flight for kernels that wait on scattered loads, but each then keeps 32 bytes of
+  // stack). false leaves the registers to ptxas (89 and 80, 2 blocks). Measured on
+  // uniform 10^7 (H200): no difference resolved between the two (bench/RESULTS.md,
+  // session 22). Test knob GDEL_RESIDENT_BLOCKS=0.
   bool resident_blocks = true;
 };
 
