@@ -758,6 +758,15 @@ case "$plan" in
     done
     GDEL_PROFILE=1 bench s22b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s22c)  # session 22, third call: tet reordering at 10^6 (two pairs), its 10^7 profile, 10^8 with it
+          # (run as these same gdel-bench commands typed into the call; the plan written after)
+    for r in 1 2; do
+      GDEL_TET_REORDER=1 bench "s22c_reorder6_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s22c_plain6_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    GDEL_PROFILE=1 GDEL_TET_REORDER=1 bench s22c_prof_reorder 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_TET_REORDER=1 bench s22c_e8_reorder 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
