@@ -767,6 +767,19 @@ case "$plan" in
     GDEL_PROFILE=1 GDEL_TET_REORDER=1 bench s22c_prof_reorder 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_TET_REORDER=1 bench s22c_e8_reorder 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s22d)  # session 22, fourth call (s22a's binaries): every generator at 10^6, plain and reordered (two
+          # rounds); resident blocks off/on at 10^7, four rounds; the GPU tests with resident blocks off
+    for r in 1 2; do
+      bench "s22d_gen_$r" 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_TET_REORDER=1 bench "s22d_gen_reorder_$r" 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    for r in 1 2 3 4; do
+      GDEL_RESIDENT_BLOCKS=0 bench "s22d_rb0_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s22d_rb1_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    GDEL_RESIDENT_BLOCKS=0 step gflip3d_rb0 150 "$tbin/gpu_gflip3d"
+    GDEL_RESIDENT_BLOCKS=0 step gdel3d_rb0 200 "$tbin/gpu_gdel3d"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
