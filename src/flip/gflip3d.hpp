@@ -78,13 +78,14 @@ struct FlipConfig {
   // entries, records, next active set), which at 10^8 points would otherwise reach
   // 17 GB in the largest iterations. GDEL_FLIPS_PER_ITERATION sets it (read by run()).
   std::int64_t max_flips_per_iteration = std::int64_t(1) << 24;
-  // On the GPU the propose and flip kernels (fast passes) keep 3 and 4 blocks of 256
-  // threads resident per SM: ptxas caps their registers at 80 and 64 (more warps in
+  // true: on the GPU the propose and flip kernels (fast passes) keep 3 and 4 blocks of
+  // 256 threads resident per SM; ptxas caps their registers at 80 and 64 (more warps in
   // flight for kernels that wait on scattered loads, but each then keeps 32 bytes of
-  // stack). false leaves the registers to ptxas (89 and 80, 2 blocks). Measured on
-  // uniform 10^7 (H200): no difference resolved between the two (bench/RESULTS.md,
-  // session 22). Test knob GDEL_RESIDENT_BLOCKS=0.
-  bool resident_blocks = true;
+  // stack). false (default) leaves the registers to ptxas (89 and 80, 2 blocks): on
+  // uniform 10^7 (H200) it was faster in 5 of 6 alternating pairs over two calls, by
+  // ≈ 2.5 % on the medians of the second (bench/RESULTS.md, session 22). Test knob
+  // GDEL_RESIDENT_BLOCKS=1.
+  bool resident_blocks = false;
 };
 
 // The fast/exact split of the parallel layer with the predicates' scratch size. exact
