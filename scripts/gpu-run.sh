@@ -782,7 +782,7 @@ case "$plan" in
     ;;
   s22e)  # session 22, fifth call: where a uniform 10^7 run's GPU time goes, kernel by kernel (nsys: the
           # kernels' summed times, one run of gdel-bench, default settings, then with tet reordering)
-    nsys=$(command -v nsys || ls /opt/nvidia/nsight-systems/*/bin/nsys /usr/local/cuda/bin/nsys 2>/dev/null | head -1)
+    nsys=$(command -v nsys || ls /opt/nvidia/nsight-systems/*/bin/nsys /opt/nvidia/nsight-compute/*/host/target-linux-x64/nsys 2>/dev/null | head -1)
     for v in plain reorder; do
       (if [ $v = reorder ]; then export GDEL_TET_REORDER=1; fi
        step "s22e_nsys_$v" 150 "$nsys" profile --force-overwrite true -o "/tmp/s22e_$v" "$gb" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1)
