@@ -780,16 +780,6 @@ case "$plan" in
     GDEL_RESIDENT_BLOCKS=0 step gflip3d_rb0 150 "$tbin/gpu_gflip3d"
     GDEL_RESIDENT_BLOCKS=0 step gdel3d_rb0 200 "$tbin/gpu_gdel3d"
     ;;
-  s22e)  # session 22, fifth call: where a uniform 10^7 run's GPU time goes, kernel by kernel (nsys: the
-          # kernels' summed times, one run of gdel-bench, default settings, then with tet reordering)
-    nsys=$(command -v nsys || ls /opt/nvidia/nsight-systems/*/bin/nsys /opt/nvidia/nsight-compute/*/host/target-linux-x64/nsys 2>/dev/null | head -1)
-    for v in plain reorder; do
-      (if [ $v = reorder ]; then export GDEL_TET_REORDER=1; fi
-       step "s22e_nsys_$v" 150 "$nsys" profile --force-overwrite true -o "/tmp/s22e_$v" "$gb" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1)
-      "$nsys" stats --force-export true --report cuda_gpu_kern_sum --format csv --output "$out/s22e_kern_$v" "/tmp/s22e_$v.nsys-rep" >/dev/null 2>&1
-      ls "$out"/s22e_kern_"$v"* 2>/dev/null | tee -a "$out/summary.txt"
-    done
-    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
