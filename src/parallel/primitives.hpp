@@ -226,8 +226,10 @@ void parallel_for(Context<Cuda>& c, std::int64_t n, F f, int block = 256) {
 }
 
 // parallel_for in blocks of 256 threads with at least MinBlocks of them resident per SM
-// (MinBlocks = 0: as parallel_for, ptxas free to take registers). A kernel that waits on
-// scattered loads wants warps in flight more than registers (bench/RESULTS.md, session 22).
+// (MinBlocks = 0: as parallel_for, ptxas free to take registers). Tried on gFlip3D's
+// propose and flip kernels (FlipConfig::resident_blocks): the cap cost them 32 bytes of
+// stack each and uniform 10^7 ran ≈ 2.5 % slower, so it is off there (bench/RESULTS.md,
+// session 22).
 template <int MinBlocks, class F>
 void parallel_for_resident(Context<Cuda>& c, std::int64_t n, F f) {
   if constexpr (MinBlocks <= 0) {
