@@ -160,7 +160,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   }
   auto& mesh = alg.mesh();
   if (!sequential) {  // one point per round wrote the mesh back compacted
-    mesh.compact(/*shrink=*/true);
+    alg.finish_mesh();  // compacted, or sorted by vertex (Options::reorder_tets)
     par::mark(ctx, "output: compact mesh");
   }
   const I64 nt = mesh.size();

@@ -48,10 +48,13 @@ struct FlipConfig {
   // (the original rule) and a stuck tet leaves the active set. Rounds that only split
   // (terminal variant, tail rule) never defer.
   bool independent_splits = false;
-  // Re-order tets by smallest vertex id every second round (ALGORITHMS.md §2.2): with
-  // curve-sorted points this restores spatial locality in memory (Options::reorder_tets;
-  // off by default: no gain measured on an H200, see bench/RESULTS.md).
+  // Re-order tets by smallest vertex id every reorder_every-th round and once for the
+  // output (ALGORITHMS.md §2.2): with curve-sorted points this restores spatial locality
+  // in memory (Options::reorder_tets). Each sort only when its temporaries fit under the
+  // memory peak so far (GFlip3D::reorder_tets). reorder_every = 0: the output's sort
+  // only. Study knob GDEL_REORDER_EVERY (read by run()).
   bool reorder_tets = false;
+  int reorder_every = 2;
   // Non-optimal flipping once flipping is stuck at the end (Options::nonoptimal_flips):
   // at most nonoptimal_rounds rounds, each of at most nonoptimal_steps parallel steps of
   // non-improving flips followed by a normal flip loop. With independent_splits also one
@@ -78,14 +81,6 @@ struct FlipConfig {
   // entries, records, next active set), which at 10^8 points would otherwise reach
   // 17 GB in the largest iterations. GDEL_FLIPS_PER_ITERATION sets it (read by run()).
   std::int64_t max_flips_per_iteration = std::int64_t(1) << 24;
-  // true: on the GPU the propose and flip kernels (fast passes) keep 3 and 4 blocks of
-  // 256 threads resident per SM; ptxas caps their registers at 80 and 64 (more warps in
-  // flight for kernels that wait on scattered loads, but each then keeps 32 bytes of
-  // stack). false (default) leaves the registers to ptxas (89 and 80, 2 blocks): on
-  // uniform 10^7 (H200) it was faster in 5 of 6 alternating pairs over two calls, by
-  // ≈ 2.5 % on the medians of the second (bench/RESULTS.md, session 22). Test knob
-  // GDEL_RESIDENT_BLOCKS=1.
-  bool resident_blocks = false;
 };
 
 // The fast/exact split of the parallel layer with the predicates' scratch size. exact
@@ -93,12 +88,11 @@ struct FlipConfig {
 // without a scratch (par::fast_then_exact_tiered, Geo::int_points).
 // With `tally` (a counter in backend memory) the count of exact items goes there and the
 // host is not waited for; max_threads > 0 then caps the scratch threads (par::fast_then_exact).
-// MinBlocks: see par::fast_then_exact_tiered.
-template <int MinBlocks = 0, class B, class Fast, class Exact>
+template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact(Context<B>& ctx, const Geo& g, std::int64_t n, std::int8_t* undecided, Fast fast,
                              Exact exact, std::int64_t* tally = nullptr, std::int64_t max_threads = -1) {
-  return par::fast_then_exact_tiered<MinBlocks>(ctx, n, undecided, fast, exact, geom::kPredicateWork,
-                                                g.finite_scratch_free(), tally, max_threads);
+  return par::fast_then_exact_tiered(ctx, n, undecided, fast, exact, geom::kPredicateWork, g.finite_scratch_free(),
+                                     tally, max_threads);
 }
 
 template <class B>
@@ -126,7 +120,7 @@ class GFlip3D {
   void run() {
     debug_ = std::getenv("GDEL_CHECK_MESH") != nullptr;
     if (const char* e = std::getenv("GDEL_FLIP_LOG_RECORDS")) cfg_.log_records = std::max<long long>(1, std::atoll(e));
-    if (const char* e = std::getenv("GDEL_RESIDENT_BLOCKS")) cfg_.resident_blocks = std::atoi(e) != 0;
+    if (const char* e = std::getenv("GDEL_REORDER_EVERY")) cfg_.reorder_every = std::max(0, std::atoi(e));
     if (const char* e = std::getenv("GDEL_FLIPS_PER_ITERATION"))
       cfg_.max_flips_per_iteration = std::max<long long>(1, std::atoll(e));
     trace_ = std::getenv("GDEL_FLIP_TRACE") != nullptr;
@@ -176,10 +170,9 @@ class GFlip3D {
           log_.release();  // the insertion round does not need its storage
           t_relocate_ += since(tl);
         }
-        if (remaining > 0 && cfg_.reorder_tets && st_.rounds % 2 == 0) {
+        if (remaining > 0 && cfg_.reorder_tets && cfg_.reorder_every > 0 && st_.rounds % cfg_.reorder_every == 0) {
           auto to = std::chrono::steady_clock::now();
-          reorder_tets();
-          t_reorder_ += since(to);
+          if (reorder_tets(/*shrink=*/false)) t_reorder_ += since(to);  // (a stage only when one ran)
         }
         // Tail rule (ALGORITHMS.md §3.1): the last tiny rounds are not worth a flip
         // loop each; insert them by splitting and flip once at the end.
@@ -882,11 +875,7 @@ class GFlip3D {
       pp[k] = p;
       return true;
     };
-    // (the fast kernel at one of two occupancies: FlipConfig::resident_blocks)
-    if (cfg_.resident_blocks)
-      st_.exact_evaluations += fast_then_exact<3>(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
-    else
-      st_.exact_evaluations += fast_then_exact(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
+    st_.exact_evaluations += fast_then_exact(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
     par::mark(ctx_, "flip: propose");
     und.release();
     active_deferred_ = false;
@@ -1071,10 +1060,7 @@ class GFlip3D {
     const ExecuteFlip xf{m, g, A, flp, pp, rec, src, o23, mark, stamp, ext};
     auto xfast = [=] GDEL_LAMBDA(std::int64_t f) { return xf.template run<false>(f, nullptr); };
     auto xexact = [=] GDEL_LAMBDA(std::int64_t f, double* work) { return xf.template run<true>(f, work); };
-    if (cfg_.resident_blocks)
-      st_.exact_evaluations += fast_then_exact<4>(ctx_, g, nfl, und2.data(), xfast, xexact, exact_tally(), scratch_threads());
-    else
-      st_.exact_evaluations += fast_then_exact(ctx_, g, nfl, und2.data(), xfast, xexact, exact_tally(), scratch_threads());
+    st_.exact_evaluations += fast_then_exact(ctx_, g, nfl, und2.data(), xfast, xexact, exact_tally(), scratch_threads());
     par::mark(ctx_, "flip: records + write tets");
     prop.release();  // (the codes and the accepted list are the records' now)
     fl.release();
@@ -1350,24 +1336,44 @@ class GFlip3D {
     return commit_flips(ap, ns, code, with_log);
   }
 
-  // --- periodic re-ordering of tets ---------------------------------------------------
-  // Between rounds: no flip log and no active set are alive; only the uninserted
-  // points' tets need remapping.
-  void reorder_tets() {
+  // --- re-ordering of tets -----------------------------------------------------------
+  // Sorts the tets by their smallest finite vertex (a tet of ∞ with its smallest finite
+  // one): the points are curve sorted, so tets near each other in space come near each
+  // other in memory (FlipConfig::reorder_tets). Only when the sort's temporaries fit under
+  // the run's memory peak so far (TetMesh::reorder_bytes): it never raises the peak.
+  // Between rounds no flip log and no active set are alive, and only the uninserted
+  // points' tets need remapping; shrink (the output, after release_work): the capacity
+  // becomes the alive tets. Returns whether it sorted.
+  bool reorder_tets(bool shrink) {
+    auto& mem = ctx_.memory();
+    const bool fits = mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes()) <= mem.peak();
+    if (trace_)
+      std::fprintf(stderr, "gflip3d tet reordering: %s (%.1f MiB held + %.1f MiB needed, peak %.1f MiB)\n",
+                   fits ? "done" : "skipped", mem.current() / 1048576.0, mesh_.reorder_bytes() / 1048576.0,
+                   mem.peak() / 1048576.0);
+    if (!fits) return false;
     const vid_t inf = static_cast<vid_t>(n_);
-    auto remap = mesh_.reorder([=] GDEL_LAMBDA(const mesh::Tet& t) {
-      // smallest finite vertex id; tets of ∞ sort with their smallest finite vertex
-      vid_t m = inf;
-      for (int i = 0; i < 4; ++i) m = (t.v[i] != inf && t.v[i] < m) ? t.v[i] : m;
-      return static_cast<std::uint64_t>(m);
-    });
+    auto remap = mesh_.reorder(
+        [=] GDEL_LAMBDA(const mesh::Tet& t) {
+          vid_t m = inf;
+          for (int i = 0; i < 4; ++i) m = (t.v[i] != inf && t.v[i] < m) ? t.v[i] : m;
+          return m;
+        },
+        inf, shrink);
     const tid_t* rm = remap.data();
     const vid_t* U = todo_.data();
     tid_t* vt = vert_tet_.data();
     par::parallel_for(ctx_, static_cast<std::int64_t>(todo_.size()), [=] GDEL_LAMBDA(std::int64_t i) { vt[U[i]] = rm[vt[U[i]]]; });
     // per-tet auxiliary state is all at its reset value between rounds, but for stale
     // flip stamps, which never match a later iteration (insert_round clears them)
-    grow_aux();
+    if (!shrink) grow_aux();
+    par::mark(ctx_, "tet reordering");
+    return true;
+  }
+  // The mesh for the output stage (after release_work): its alive tets in [0, alive),
+  // the capacity cut to them; sorted as reorder_tets() when that is on and fits.
+  void finish_mesh() {
+    if (!(cfg_.reorder_tets && reorder_tets(/*shrink=*/true))) mesh_.compact(/*shrink=*/true);
   }
 
   // Records the flip log holds before the points are relocated through it (FlipConfig).

@@ -133,11 +133,8 @@ class TetMesh {
   std::int64_t free_count() const { return free_count_; }
   std::int64_t alive_count() {
     const std::uint8_t* st = state_.data();
-    par::Buffer<std::int64_t, B> a(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(capacity(), 1)));
-    std::int64_t* ap = a.data();
-    std::int64_t n = size();
-    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) { ap[t] = (st[t] & kAlive) ? 1 : 0; });
-    return par::reduce_sum(*ctx_, ap, static_cast<std::size_t>(n));
+    return par::count_indices(*ctx_, static_cast<std::size_t>(size()),
+                              [=] GDEL_LAMBDA(std::int64_t t) { return (st[t] & kAlive) != 0; });
   }
 
   // Capacity for at least n slots; contents kept; new slots are free and dead. Growth
@@ -232,67 +229,82 @@ class TetMesh {
   // Moves alive tets to [0, alive) in the order of key(t) (ties: slot order), e.g.
   // by smallest vertex id, so that tets near each other in space (points are curve
   // sorted) are near each other in memory; returns old->new map (-1 for dead slots).
+  // Keys lie in [0, dead_key) with dead_key < 2^31 (dead slots sort last under it).
+  // shrink: as compact(). The temporaries: 16 bytes per slot during the sort, then the
+  // map (4 per slot) and one scratch array (16 per alive tet, none with shrink); see
+  // reorder_bytes().
   template <class Key>
-  par::Buffer<tid_t, B> reorder(Key key) {
+  par::Buffer<tid_t, B> reorder(Key key, tid_t dead_key, bool shrink = false) {
     const std::int64_t n = size();
-    par::Buffer<std::uint64_t, B> k(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(n, 1)));
-    par::Buffer<tid_t, B> ids(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(n, 1)));
-    std::uint64_t* kp = k.data();
-    tid_t* ip = ids.data();
-    MeshView v = view();
-    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) {
-      kp[t] = v.alive(static_cast<tid_t>(t)) ? static_cast<std::uint64_t>(key(v.tet[t])) : ~std::uint64_t(0);
-      ip[t] = static_cast<tid_t>(t);
-    });
-    par::sort_pairs(*ctx_, kp, ip, static_cast<std::size_t>(n));
-    par::Buffer<tid_t, B> remap(*ctx_, static_cast<std::size_t>(n + 1));
-    tid_t* rm = remap.data();
-    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t j) { rm[ip[j]] = kp[j] == ~std::uint64_t(0) ? -1 : tid_t(j); });
-    par::Buffer<std::int64_t, B> a(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(n, 1)));
-    std::int64_t* ap = a.data();
-    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) { ap[t] = rm[t] >= 0 ? 1 : 0; });
-    const std::int64_t alive = par::reduce_sum(*ctx_, ap, static_cast<std::size_t>(n));
-    apply_remap(rm, alive);
-    return remap;
+    const std::size_t len = static_cast<std::size_t>(n + 1);
+    par::Buffer<tid_t, B> k(*ctx_, len);  // the keys, then the map
+    tid_t* kp = k.data();
+    std::int64_t alive = 0;
+    {
+      par::Buffer<tid_t, B> ids(*ctx_, len);
+      tid_t* ip = ids.data();
+      MeshView v = view();
+      par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) {
+        kp[t] = v.alive(static_cast<tid_t>(t)) ? key(v.tet[t]) : dead_key;
+        ip[t] = static_cast<tid_t>(t);
+      });
+      int bits = 1;
+      while (bits < 31 && (tid_t(1) << bits) <= dead_key) ++bits;
+      par::sort_pairs(*ctx_, kp, ip, static_cast<std::size_t>(n), bits);
+      alive = par::count_indices(*ctx_, static_cast<std::size_t>(n),
+                                 [=] GDEL_LAMBDA(std::int64_t j) { return kp[j] != dead_key; });
+      // the dead sort last: sorted position j < alive is the new slot (no reads of kp here)
+      const tid_t na = static_cast<tid_t>(alive);
+      par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t j) { kp[ip[j]] = tid_t(j) < na ? tid_t(j) : tid_t(-1); });
+    }
+    apply_remap(kp, alive, shrink);
+    return k;
   }
+  // A bound on the bytes reorder() holds beyond the mesh: 16 per slot and the radix
+  // sort's own scratch (below 4 per slot and 64 KiB: its histograms and look-back
+  // counters) during the sort, at most 20 per slot after it.
+  std::int64_t reorder_bytes() const { return 20 * (size() + 1) + (std::int64_t(1) << 16); }
 
   // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
   // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
-  // a time, so that the step needs the largest array (tets) twice, not the whole mesh.
-  // shrink: capacity = alive.
+  // a time through one scratch array of the alive tets, copied back in place (shrink:
+  // each array replaced by a new one of `alive` slots instead, the capacity).
   void apply_remap(const tid_t* rm, std::int64_t alive, bool shrink = false) {
     const std::int64_t n = size();
-    const std::int64_t cap = std::max<std::int64_t>(shrink ? alive : capacity(), 1);
-    const std::uint8_t* st = state_.data();
-    remap_records(tet_, 1, cap, rm, [] GDEL_LAMBDA(const Tet& x) { return x; });
-    remap_records(opp_t_, 4, cap, rm, [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; });
-    remap_records(opp_f_, 4, cap, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
-    remap_records(fflag_, 4, cap, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
-    par::Buffer<std::uint8_t, B> s2(*ctx_, static_cast<std::size_t>(cap));
-    std::uint8_t* sp = s2.data();
-    par::parallel_for(*ctx_, cap, [=] GDEL_LAMBDA(std::int64_t k) { sp[k] = 0; });
-    par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) {
-      if (rm[t] >= 0) sp[rm[t]] = st[t];
-    });
-    state_ = std::move(s2);
+    par::Buffer<Tet, B> scratch(*ctx_, shrink ? 0 : static_cast<std::size_t>(std::max<std::int64_t>(alive, 1)));
+    remap_records(tet_, 1, alive, shrink, scratch, rm, [] GDEL_LAMBDA(const Tet& x) { return x; });
+    remap_records(opp_t_, 4, alive, shrink, scratch, rm, [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; });
+    remap_records(opp_f_, 4, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
+    remap_records(fflag_, 4, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
+    remap_records(state_, 1, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
+    if (!shrink && n > alive) {  // the slots past the alive tets are dead
+      std::uint8_t* st = state_.data();
+      par::parallel_for(*ctx_, n - alive, [=] GDEL_LAMBDA(std::int64_t k) { st[alive + k] = 0; });
+    }
     free_.release();
     size_ = alive;
     free_count_ = 0;
   }
 
   // apply_remap's step for one array: buf's per-slot records of `per` elements moved to
-  // their new slots in a new array of cap slots (x: the element's new value).
+  // their new slots (x: the element's new value), through the scratch or (shrink) into
+  // a new array of `alive` slots.
   template <class T, class X>
-  void remap_records(par::Buffer<T, B>& buf, std::int64_t per, std::int64_t cap, const tid_t* rm, X x) {
-    par::Buffer<T, B> nb(*ctx_, static_cast<std::size_t>(per * cap));
-    T* dst = nb.data();
+  void remap_records(par::Buffer<T, B>& buf, std::int64_t per, std::int64_t alive, bool shrink,
+                     par::Buffer<Tet, B>& scratch, const tid_t* rm, X x) {
+    static_assert(alignof(T) <= alignof(Tet));  // (and per * sizeof(T) <= sizeof(Tet) for all five arrays)
+    par::Buffer<T, B> nb(*ctx_, shrink ? static_cast<std::size_t>(std::max<std::int64_t>(per * alive, 1)) : 0);
+    T* dst = shrink ? nb.data() : reinterpret_cast<T*>(scratch.data());
     const T* src = buf.data();
     par::parallel_for(*ctx_, size(), [=] GDEL_LAMBDA(std::int64_t t) {
       const tid_t d = rm[t];
       if (d < 0) return;
       for (std::int64_t i = 0; i < per; ++i) dst[per * std::int64_t(d) + i] = x(src[per * t + i]);
     });
-    buf = std::move(nb);
+    if (shrink)
+      buf = std::move(nb);
+    else
+      par::detail::Memory<B>::copy(*ctx_, buf.data(), dst, static_cast<std::size_t>(per * alive) * sizeof(T));
   }
 
   par::Buffer<Tet, B>& tets() { return tet_; }

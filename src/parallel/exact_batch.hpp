@@ -105,8 +105,6 @@ namespace detail {
 // the passes bounded by what the host knows and cut by the backend's count. With a tally
 // nothing waits for the host before the exact passes are enqueued (below 2^22 items);
 // without one the count is read first, so that the scratch is sized by it.
-// (The passes after the fast one depend only on Exact: a caller that runs one fast pass
-// at two occupancies, MinBlocks, instantiates the exact kernels once.)
 template <bool Tiers, class B, class Exact>
 std::int64_t exact_after_fast(Context<B>& ctx, std::int64_t n, const std::int8_t* undecided, Exact exact,
                               std::size_t work_doubles, bool tiered, std::int64_t* tally, std::int64_t max_threads) {
@@ -150,12 +148,12 @@ std::int64_t exact_after_fast(Context<B>& ctx, std::int64_t n, const std::int8_t
   parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { *tally += cp[0]; });
   return 0;
 }
-template <bool Tiers, int MinBlocks = 0, class B, class Fast, class Exact>
+template <bool Tiers, class B, class Fast, class Exact>
 std::int64_t fast_then_exact_impl(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
                                   std::size_t work_doubles, bool tiered, std::int64_t* tally,
                                   std::int64_t max_threads) {
   if (n <= 0) return 0;
-  parallel_for_resident<MinBlocks>(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
+  parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
   return exact_after_fast<Tiers>(ctx, n, undecided, exact, work_doubles, tiered, tally, max_threads);
 }
 }  // namespace detail
@@ -177,14 +175,12 @@ std::int64_t fast_then_exact(Context<B>& ctx, std::int64_t n, std::int8_t* undec
 // The same with exact(i, work) returning whether it decided item i; with `tiered` the
 // undecided items are first tried with work = nullptr, and only
 // those it leaves go to the scratch threads (see the top of this file).
-// MinBlocks > 0: the fast pass with at least that many blocks of 256 threads resident
-// per SM (parallel_for_resident).
-template <int MinBlocks = 0, class B, class Fast, class Exact>
+template <class B, class Fast, class Exact>
 std::int64_t fast_then_exact_tiered(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, Exact exact,
                                     std::size_t work_doubles, bool tiered, std::int64_t* tally = nullptr,
                                     std::int64_t max_threads = -1) {
-  return detail::fast_then_exact_impl<true, MinBlocks>(ctx, n, undecided, fast, exact, work_doubles, tiered, tally,
-                                                       max_threads);
+  return detail::fast_then_exact_impl<true>(ctx, n, undecided, fast, exact, work_doubles, tiered, tally,
+                                            max_threads);
 }
 
 // Signs: out[i] = filter(i) (a sign, or kUndecided), then exact(i, work) for the

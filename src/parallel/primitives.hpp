@@ -57,11 +57,6 @@ void parallel_for(Context<Cpu>&, std::int64_t n, F f) {
 #pragma omp parallel for schedule(static) if (n >= kSerialBelow)
   for (std::int64_t i = 0; i < n; ++i) f(i);
 }
-// The same; on the GPU with at least MinBlocks blocks per SM (see the CUDA form).
-template <int MinBlocks, class F>
-void parallel_for_resident(Context<Cpu>& c, std::int64_t n, F f) {
-  parallel_for(c, n, f);
-}
 
 template <class T>
 void exclusive_scan(Context<Cpu>&, const T* in, T* out, std::size_t n) {
@@ -187,13 +182,6 @@ __global__ void for_kernel(std::int64_t n, F f) {
   const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
   for (std::int64_t i = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += stride) f(i);
 }
-// for_kernel for blocks of 256 threads, MinBlocks of them resident per SM: ptxas caps
-// the registers to fit (parallel_for_resident).
-template <int MinBlocks, class F>
-__global__ void __launch_bounds__(256, MinBlocks) for_kernel_resident(std::int64_t n, F f) {
-  const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
-  for (std::int64_t i = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += stride) f(i);
-}
 template <class F>
 __global__ void for_counted_kernel(std::int64_t n, const std::int64_t* count, F f) {
   const std::int64_t c = *count;
@@ -223,22 +211,6 @@ void parallel_for(Context<Cuda>& c, std::int64_t n, F f, int block = 256) {
   if (n <= 0) return;
   detail::for_kernel<<<detail::grid_for(c, n, block), block, 0, c.stream()>>>(n, f);
   GDEL_CUDA_CHECK_LAUNCH("parallel_for");
-}
-
-// parallel_for in blocks of 256 threads with at least MinBlocks of them resident per SM
-// (MinBlocks = 0: as parallel_for, ptxas free to take registers). Tried on gFlip3D's
-// propose and flip kernels (FlipConfig::resident_blocks): the cap cost them 32 bytes of
-// stack each and uniform 10^7 ran ≈ 2.5 % slower, so it is off there (bench/RESULTS.md,
-// session 22).
-template <int MinBlocks, class F>
-void parallel_for_resident(Context<Cuda>& c, std::int64_t n, F f) {
-  if constexpr (MinBlocks <= 0) {
-    parallel_for(c, n, f);
-  } else {
-    if (n <= 0) return;
-    detail::for_kernel_resident<MinBlocks><<<detail::grid_for(c, n, 256), 256, 0, c.stream()>>>(n, f);
-    GDEL_CUDA_CHECK_LAUNCH("parallel_for_resident");
-  }
 }
 
 // The bound n is what the host knows; the count is usually far below it (a selection's

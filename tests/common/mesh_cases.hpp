@@ -75,7 +75,7 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   });
   // reorder by a key (largest first vertex first): slots follow the key, links follow the slots
   {
-    auto rmk = m.reorder([] GDEL_LAMBDA(const Tet& t) { return std::uint64_t(1000 - t.v[0]); }).to_host();
+    auto rmk = m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(1000 - t.v[0]); }, 1024).to_host();
     EXPECT_EQ(m.size(), 3);
     EXPECT_EQ(rmk[2], -1);  // dead slot dropped
     auto tv = m.tets().to_host();
@@ -85,8 +85,14 @@ void tet_mesh_cases(par::Context<B>& ctx) {
     auto op = m.opp_to_host();
     EXPECT_EQ(op[4 * 0 + 3], pack_facet(2, 3));  // old 3 <-> old 1 glued through face 3
     EXPECT_EQ(op[4 * 2 + 3], pack_facet(0, 3));
+    // the per-tet bytes move with their tets (in place: the slot past them is dead)
+    auto stv = m.state().to_host();
+    EXPECT_EQ(stv[0] & kAlive, kAlive);
+    EXPECT_EQ(stv[2] & kAlive, kAlive);
+    EXPECT_EQ(stv[3], 0);
+    EXPECT_EQ(m.face_flags().to_host()[4 * 1 + 2], kSpecial | kSphereFail);  // old slot 0's face 2
     // and back to slot order for the compaction checks below
-    m.reorder([] GDEL_LAMBDA(const Tet& t) { return std::uint64_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); });
+    m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); }, 4);
   }
   auto remap = m.compact().to_host();
   EXPECT_EQ(m.size(), 3);
@@ -94,6 +100,16 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   auto opp = m.opp_to_host();
   EXPECT_EQ(opp[4 * 1 + 3], pack_facet(2, 3));
   EXPECT_EQ(opp[4 * 2 + 3], pack_facet(1, 3));
+  // sorted with shrink (the output's form): the capacity is cut to the alive tets
+  m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0]); }, 1024, /*shrink=*/true);
+  EXPECT_EQ(m.size(), 3);
+  EXPECT_EQ(m.capacity(), 3);
+  auto ts = m.tets().to_host();
+  EXPECT_EQ(ts[0].v[0], 1);
+  EXPECT_EQ(ts[1].v[0], 5);
+  EXPECT_EQ(ts[2].v[0], 9);
+  EXPECT_EQ(m.opp_to_host()[4 * 2 + 3], pack_facet(0, 3));  // {9,..} and {1,..} still glued
+  EXPECT_EQ(m.alive_count(), 3);
 }
 
 }  // namespace gdel::test
