@@ -87,9 +87,10 @@ inline void gflip_generator_cases(Backend b, std::size_t n) {
     o.reorder_tets = true;
     Triangulation tr = delaunay(pts, o);
     expect_flip_output_valid(pts, tr, b);
-    if (tr.stats.rounds > 2)
+    if (tr.stats.rounds > 2) {
       EXPECT_TRUE(std::any_of(tr.stats.stages.begin(), tr.stats.stages.end(),
                               [](const auto& s) { return s.first == "tet reordering"; }));
+    }
     o.reorder_tets = false;
     // independent splits (no two tets that share a face split in one round)
     o.independent_splits = true;
