@@ -52,7 +52,7 @@ struct FlipConfig {
   // output (ALGORITHMS.md §2.2): with curve-sorted points this restores spatial locality
   // in memory (Options::reorder_tets). Each sort only when its temporaries fit under the
   // memory peak so far (GFlip3D::reorder_tets). reorder_every = 0: the output's sort
-  // only. Study knob GDEL_REORDER_EVERY (read by run()).
+  // only. Test and study knobs GDEL_TET_REORDER=0/1 and GDEL_REORDER_EVERY (read by run()).
   bool reorder_tets = false;
   int reorder_every = 2;
   // Non-optimal flipping once flipping is stuck at the end (Options::nonoptimal_flips):
@@ -120,6 +120,7 @@ class GFlip3D {
   void run() {
     debug_ = std::getenv("GDEL_CHECK_MESH") != nullptr;
     if (const char* e = std::getenv("GDEL_FLIP_LOG_RECORDS")) cfg_.log_records = std::max<long long>(1, std::atoll(e));
+    if (const char* e = std::getenv("GDEL_TET_REORDER")) cfg_.reorder_tets = std::atoi(e) != 0;
     if (const char* e = std::getenv("GDEL_REORDER_EVERY")) cfg_.reorder_every = std::max(0, std::atoi(e));
     if (const char* e = std::getenv("GDEL_FLIPS_PER_ITERATION"))
       cfg_.max_flips_per_iteration = std::max<long long>(1, std::atoll(e));
