@@ -782,12 +782,14 @@ case "$plan" in
     ;;
   s23a)  # session 23: lean tet reordering (a sort only under the memory peak so far; the output's
           # compaction sorted too) and resident blocks removed. old = s22a's new binary (056138a) with
-          # resident blocks off, i.e. session 22's final code. Tests; uniform 10^7 old / new / reorder /
-          # reorder of the output only, two rounds; trace and profile; every generator at 10^6
+          # resident blocks off, i.e. session 22's final code. Tests, plain and with GDEL_TET_REORDER=1;
+          # uniform 10^7 old / new / reorder / reorder of the output only, two rounds; trace; profile
     export GDEL_RESIDENT_BLOCKS=0  # (read by the old binary only)
     step gflip3d 150 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
     step mesh 60 "$tbin/gpu_mesh"
+    GDEL_TET_REORDER=1 step gflip3d_re 150 "$tbin/gpu_gflip3d"
+    GDEL_TET_REORDER=1 step gdel3d_re 200 "$tbin/gpu_gdel3d"
     for r in 1 2; do
       step "s23a_old7_$r" 60 "$bin/gdel-bench-old" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
       bench "s23a_new7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
@@ -797,15 +799,18 @@ case "$plan" in
     GDEL_FLIP_TRACE=1 GDEL_TET_REORDER=1 step s23a_trace7 60 "$gb" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     grep -h "tet reordering" /tmp/gpu-run-s23a_trace7.log | tee -a "$out/summary.txt"
     GDEL_PROFILE=1 GDEL_TET_REORDER=1 bench s23a_prof_re 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    for r in 1 2; do
-      bench "s23a_gen_$r" 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      GDEL_TET_REORDER=1 bench "s23a_gen_re_$r" 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
     ;;
-  s23b)  # session 23, second call: 10^8 with the lean reordering (trace: which sorts fit), then plain
+  s23b)  # session 23, second call: every generator at 10^6, plain and reordered (two rounds); 10^8 reordered
+    for r in 1 2; do
+      bench "s23b_gen_$r" 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_TET_REORDER=1 bench "s23b_gen_re_$r" 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
     GDEL_FLIP_TRACE=1 GDEL_TET_REORDER=1 bench s23b_e8_re 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     grep -h "tet reordering" /tmp/gpu-run-s23b_e8_re.log | tee -a "$out/summary.txt"
-    bench s23b_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s23c)  # session 23, third call: 10^8 plain and reordered, one run each
+    bench s23c_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_TET_REORDER=1 bench s23c_e8_re 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
