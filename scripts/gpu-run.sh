@@ -812,6 +812,13 @@ case "$plan" in
     bench s23c_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_TET_REORDER=1 bench s23c_e8_re 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s23d)  # session 23, second call made: 10^8 reordered (trace: which sorts fit), then every generator at
+          # 10^6 plain and reordered, one round, as the call's budget allows
+    GDEL_FLIP_TRACE=1 GDEL_TET_REORDER=1 bench s23d_e8_re 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    grep -h "tet reordering" /tmp/gpu-run-s23d_e8_re.log | tee -a "$out/summary.txt"
+    bench s23d_gen 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_TET_REORDER=1 bench s23d_gen_re 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

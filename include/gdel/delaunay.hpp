@@ -73,8 +73,11 @@ struct Options {
   // points; far more on cospherical input, whose stuck ties are re-proposed exactly).
   // false (default): every tet holding points splits in every round (the original rule).
   bool independent_splits = false;
-  // gFlip3D: re-order tets by smallest vertex id every second insertion round, for
-  // memory locality (measured without gain on an H200 at 10^6..10^7 points; a study knob).
+  // gFlip3D: sort tets by smallest vertex id every second insertion round and before
+  // the output, for memory locality; each sort only when its temporaries fit under the
+  // run's memory peak so far, so the peak does not grow. On an H200: uniform 10^7 -7.5 %,
+  // 10^8 -8.7 %, every generator at 10^6 faster (bench/RESULTS.md, session 23). Off by
+  // default while two quality tests of independent splits miss their thresholds with it.
   bool reorder_tets = false;
   // CPU backend: run gFlip3D in the thesis's parallel rounds, as on the GPU. Default
   // (false): one point per round (docs/gflip3d.md): each point located by a walk, split
