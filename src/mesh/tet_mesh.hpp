@@ -17,6 +17,8 @@
 // a slot; slots are returned with TetMesh::release(list, k) in list order.
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -248,8 +250,7 @@ class TetMesh {
         kp[t] = v.alive(static_cast<tid_t>(t)) ? key(v.tet[t]) : dead_key;
         ip[t] = static_cast<tid_t>(t);
       });
-      int bits = 1;
-      while (bits < 31 && (tid_t(1) << bits) <= dead_key) ++bits;
+      const int bits = std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(dead_key))));
       par::sort_pairs(*ctx_, kp, ip, static_cast<std::size_t>(n), bits);
       alive = par::count_indices(*ctx_, static_cast<std::size_t>(n),
                                  [=] GDEL_LAMBDA(std::int64_t j) { return kp[j] != dead_key; });
