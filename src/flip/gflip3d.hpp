@@ -1342,9 +1342,10 @@ class GFlip3D {
   // one): the points are curve sorted, so tets near each other in space come near each
   // other in memory (FlipConfig::reorder_tets). Only when the sort's temporaries fit under
   // the run's memory peak so far (TetMesh::reorder_bytes): it never raises the peak.
-  // Between rounds no flip log and no active set are alive, and only the uninserted
-  // points' tets need remapping; shrink (the output, after release_work): the capacity
-  // becomes the alive tets. Returns whether it sorted.
+  // Between rounds no flip log and no active set are alive: only the uninserted points'
+  // tets and the stuck tets carried to the next round (carry_) need remapping; shrink
+  // (the output, after release_work): the capacity becomes the alive tets. Returns
+  // whether it sorted.
   bool reorder_tets(bool shrink) {
     auto& mem = ctx_.memory();
     const bool fits = mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes()) <= mem.peak();
@@ -1365,6 +1366,16 @@ class GFlip3D {
     const vid_t* U = todo_.data();
     tid_t* vt = vert_tet_.data();
     par::parallel_for(ctx_, static_cast<std::int64_t>(todo_.size()), [=] GDEL_LAMBDA(std::int64_t i) { vt[U[i]] = rm[vt[U[i]]]; });
+    // the tets the last flip loop left stuck (independent splits) are tet ids too: the
+    // next round's flip loop starts from them
+    if (carry_.size() > 0) {
+      const tid_t* cp = carry_.data();
+      Buffer<tid_t, B> moved(ctx_, carry_.size());
+      tid_t* mp = moved.data();
+      par::parallel_for(ctx_, static_cast<std::int64_t>(carry_.size()),
+                        [=] GDEL_LAMBDA(std::int64_t i) { mp[i] = cp[i] >= 0 ? rm[cp[i]] : tid_t(-1); });
+      carry_.resize(par::copy_if(ctx_, mp, carry_.data(), carry_.size(), [=] GDEL_LAMBDA(tid_t x) { return x >= 0; }));
+    }
     // per-tet auxiliary state is all at its reset value between rounds, but for stale
     // flip stamps, which never match a later iteration (insert_round clears them)
     if (!shrink) grow_aux();
