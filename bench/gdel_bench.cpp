@@ -174,7 +174,6 @@ int bench_main(int argc, char** argv) {
           o.insertion = m.find("-random") != std::string::npos     ? gdel::InsertionRule::Random
                         : m.find("-centroid") != std::string::npos ? gdel::InsertionRule::Centroid
                                                                    : gdel::InsertionRule::Circumcenter;
-          o.reorder_tets = std::getenv("GDEL_TET_REORDER") != nullptr;
           o.backend = m.find("cuda") != std::string::npos ? gdel::Backend::Cuda : gdel::Backend::Cpu;
           if (o.backend == gdel::Backend::Cuda && !have_cuda) continue;
           if (o.backend == gdel::Backend::Cpu && n > cpu_max) continue;

@@ -73,19 +73,21 @@ struct Options {
   // points; far more on cospherical input, whose stuck ties are re-proposed exactly).
   // false (default): every tet holding points splits in every round (the original rule).
   bool independent_splits = false;
-  // gFlip3D: sort tets by smallest vertex id every second insertion round and before
-  // the output, for memory locality; each sort only when its temporaries fit under the
-  // run's memory peak so far, so the peak does not grow. On an H200: uniform 10^7 -7.5 %,
-  // 10^8 -8.7 %, every generator at 10^6 faster (bench/RESULTS.md, session 23). Off by
-  // default while two quality tests of independent splits miss their thresholds with it.
-  bool reorder_tets = false;
+  // gFlip3D's parallel rounds (GPU, or CPU with cpu_rounds): sort tets by smallest
+  // vertex id every second insertion round and before the output, for memory locality;
+  // each sort only when its temporaries fit under the run's memory peak so far, so the
+  // peak does not grow. On an H200: uniform 10^7 -7.5 %, 10^8 -8.7 %, every generator
+  // at 10^6 faster (bench/RESULTS.md, session 23). The result is the same set of tets;
+  // gflip3d's flips (hence its output) can differ, as the slots' order decides the votes.
+  // The environment variable GDEL_TET_REORDER=0/1 overrides this field.
+  bool reorder_tets = true;
   // CPU backend: run gFlip3D in the thesis's parallel rounds, as on the GPU. Default
   // (false): one point per round (docs/gflip3d.md): each point located by a walk, split
   // in, and flipped to Delaunay before the next, which leaves the exact Delaunay
   // triangulation, so gdel3d has nothing to repair. That is several times faster on a few
   // cores; the rounds remain for study and comparison with the GPU. The rounds are used
   // anyway when an option above asks for them (terminal, non-optimal flips, independent
-  // splits, tet reordering, an insertion rule other than circumcenter, initial = grid).
+  // splits, an insertion rule other than circumcenter, initial = grid).
   bool cpu_rounds = false;
   // Sort output tets (each rotated to start at its smallest vertex, list sorted) so
   // that the arrays are bitwise identical across runs and backends. Without it the tets

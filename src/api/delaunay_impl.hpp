@@ -67,7 +67,7 @@ void report_profile(Context<B>& ctx, const Stats& st) {
 template <class B>
 bool one_point_per_round(const Options& opt) {
   return !B::is_device && !opt.cpu_rounds && !opt.terminal_flipping && !opt.nonoptimal_flips &&
-         !opt.independent_splits && !opt.reorder_tets && opt.insertion == InsertionRule::Circumcenter &&
+         !opt.independent_splits && opt.insertion == InsertionRule::Circumcenter &&
          opt.initial == Initial::Default;
 }
 

@@ -111,7 +111,8 @@ int main(int argc, char** argv) {
 
   // delaunay ------------------------------------------------------------------------------
   std::string in, out, algorithm = "auto", device = "auto", example, initial = "default", rule = "circumcenter";
-  bool check = false, stats = false, terminal = false, nonoptimal = false, independent = false, cpu_rounds = false;
+  bool check = false, stats = false, terminal = false, nonoptimal = false, independent = false, cpu_rounds = false,
+       no_reorder = false;
   std::uint64_t seed = 1;
   auto* del = app.add_subcommand("delaunay", "triangulate points and write the mesh");
   del->add_option("input", in, "points file: .xyz .txt .off .ply .node .npy");
@@ -136,6 +137,9 @@ int main(int argc, char** argv) {
   del->add_flag("--independent-splits", independent,
                 "gFlip3D: a tet waits while a neighbour splits in the same round, and stuck tets stay active: "
                 "3-5x fewer facets left stuck, for 2-4x the rounds (a quality option; docs/gflip3d.md)");
+  del->add_flag("--no-tet-reorder", no_reorder,
+                "gFlip3D's parallel rounds: keep the tets in allocation order instead of sorting them by vertex "
+                "between rounds and before the output (the sort is for memory locality; docs/gflip3d.md)");
   del->add_flag("--cpu-rounds", cpu_rounds,
                 "CPU backend: run gFlip3D in the GPU's parallel rounds (then gDel3D's repair) instead of the default "
                 "one point per round, which leaves the exact Delaunay triangulation and is several times faster on "
@@ -256,6 +260,7 @@ int main(int argc, char** argv) {
       o.terminal_flipping = terminal;
       o.nonoptimal_flips = nonoptimal;
       o.independent_splits = independent;
+      o.reorder_tets = !no_reorder;
       o.cpu_rounds = cpu_rounds;
       o.initial = initial == "grid" ? gdel::Initial::grid : gdel::Initial::Default;
       o.insertion = rule == "random"     ? gdel::InsertionRule::Random
