@@ -819,6 +819,34 @@ case "$plan" in
     bench s23d_gen 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     GDEL_TET_REORDER=1 bench s23d_gen_re 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ;;
+  s24a)  # session 24: tet reordering on by default (its remap now carries the stuck tets of independent
+          # splits). GPU tests under the default, gpu_gflip3d also with GDEL_TET_REORDER=0
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step mesh 60 "$tbin/gpu_mesh"
+    step grid 120 "$tbin/gpu_grid"
+    step models 120 "$tbin/gpu_models"
+    step hostile 200 "$tbin/gpu_hostile"
+    GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
+    ;;
+  s24b)  # session 24, second call: uniform 10^7 default (reordered) / off / a sort every round, two
+          # rounds; the independent-split seed sweep (thin shell 2e5, seeds 1-12, without and with
+          # non-optimal flips, reordering off and on); every generator at 10^6; 10^8 once
+    for r in 1 2; do
+      bench "s24b_def7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_TET_REORDER=0 bench "s24b_off7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_REORDER_EVERY=1 bench "s24b_ev1_7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    for re in 0 1; do
+      for s in $(seq 12); do
+        GDEL_TET_REORDER=$re bench "s24b_sweep${re}_$s" 40 --dist thin_shell --n 200000 --seed "$s" \
+          --methods gflip3d-indsplit-cuda,gflip3d-indsplit-nonopt-cuda --repeat 1
+      done
+    done
+    bench s24b_gen 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_FLIP_TRACE=1 bench s24b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    grep -h "tet reordering" /tmp/gpu-run-s24b_e8.log | tee -a "$out/summary.txt"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
