@@ -226,6 +226,12 @@ TEST_F(CliTest, NpyInputExampleInputAndStats) {
   EXPECT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(r.out.find("one point per round"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("gdel3d repair"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("tet reordering"), std::string::npos) << r.out;  // on by default in the rounds
+  r = gdel({"delaunay", "--example", "uniform:2e4", "-o", "e.vtu", "--device", "cpu", "--stats", "--check", "--cpu-rounds",
+            "--no-tet-reorder"});
+  EXPECT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("gdel3d repair"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("tet reordering"), std::string::npos) << r.out;
 }
 
 TEST_F(CliTest, GenerateEveryPointFormat) {
