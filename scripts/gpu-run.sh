@@ -825,7 +825,7 @@ case "$plan" in
     step gdel3d 200 "$tbin/gpu_gdel3d"
     step mesh 60 "$tbin/gpu_mesh"
     step grid 120 "$tbin/gpu_grid"
-    step models 120 "$tbin/gpu_models"
+    GDEL_MODELS_DIR="$PWD/.deps/models" step models 120 "$tbin/gpu_models"  # carry .deps/models
     step hostile 200 "$tbin/gpu_hostile"
     GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
     ;;
