@@ -128,7 +128,11 @@ inline void nonoptimal_auto_cases(Backend b) {
 // session 24). The counts swing 5x from seed to seed and the option makes some seeds
 // worse, so the sum is asserted, and only to fall (1130 -> 709 and 560 -> 462).
 // Asserted: valid output, rounds beyond the final stage's cap of 16 (so the rounds
-// between insertions ran), and fewer facets left not locally Delaunay in all.
+// between insertions ran), and fewer facets left not locally Delaunay in all. In the
+// allocation order (reorder_tets off): with reordering fewer rounds leave tets stuck, so
+// fewer rounds have a non-optimal round to run, and the count is no proof that they ran
+// (GPU, seed 1: 14 of 35 rounds, session 24). A count of its own in Stats would let the
+// reordered case be asserted too.
 inline void nonoptimal_each_round_cases(Backend b) {
   std::int64_t plain = 0, with = 0;
   for (std::uint64_t seed : {1, 2, 3}) {
@@ -136,6 +140,7 @@ inline void nonoptimal_each_round_cases(Backend b) {
     auto pts = gen::generate(gen::Distribution::ThinShell, 200000, seed);
     Options o = nonoptimal_options(b, Algorithm::gflip3d, false, false);
     o.independent_splits = true;
+    o.reorder_tets = false;
     Triangulation ind = delaunay(pts, o);
     o.nonoptimal_flips = true;
     Triangulation t = delaunay(pts, o);
