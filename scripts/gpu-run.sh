@@ -824,10 +824,13 @@ case "$plan" in
     step gflip3d 150 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
     step mesh 60 "$tbin/gpu_mesh"
+    GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
+    ;;
+  s24c)  # session 24, the other GPU tests the default touches (binaries in their own folder: the carry
+          # limit is 64 MiB)
     step grid 120 "$tbin/gpu_grid"
     GDEL_MODELS_DIR="$PWD/.deps/models" step models 120 "$tbin/gpu_models"  # carry .deps/models
     step hostile 200 "$tbin/gpu_hostile"
-    GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
     ;;
   s24b)  # session 24, second call: uniform 10^7 default (reordered) / off / a sort every round, two
           # rounds; the independent-split seed sweep (thin shell 2e5, seeds 1-12, without and with
