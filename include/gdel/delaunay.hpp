@@ -127,11 +127,13 @@ struct Stats {
   std::int64_t flips23 = 0, flips32 = 0;
   std::int64_t exact_evaluations = 0;  // items decided by the exact (non-filter) pass
   std::int64_t failed_vertices = 0;    // vertices of facets left not locally Delaunay (in the output)
-  // Options::nonoptimal_flips: rounds run (those after insertion rounds included),
+  // Options::nonoptimal_flips: rounds run (those after insertion rounds included), of
+  // them the rounds run after an insertion round (independent splits only),
   // non-improving flips made (all rounds, kept or not), and the facets (∞'s included)
   // not locally Delaunay when the last flip loop got stuck and in the triangulation kept
   // (fewest seen); all 0 without the option
-  std::int64_t nonoptimal_rounds = 0, nonoptimal_flips = 0, nonld_facets_stuck = 0, nonld_facets_kept = 0;
+  std::int64_t nonoptimal_rounds = 0, nonoptimal_between_rounds = 0, nonoptimal_flips = 0, nonld_facets_stuck = 0,
+               nonld_facets_kept = 0;
   // gdel3d repair: vertices gFlip3D left failing (their stars are made convex), of those
   // stars the ones Flip-Flop convexified and the ones rebuilt by beneath-beyond insertion
   // (where Flip-Flop gave up, or all with GDEL_STAR_BUILD=rebuild), stars pulled from the

@@ -31,7 +31,8 @@ std::string Stats::to_string() const {
     << flips32 << ", exact evaluations " << exact_evaluations << ", failed vertices " << failed_vertices
     << ", peak memory " << peak_bytes / (1024.0 * 1024.0) << " MiB";
   if (nonoptimal_rounds > 0)
-    s << "\n  non-optimal flipping: rounds " << nonoptimal_rounds << ", non-improving flips " << nonoptimal_flips
+    s << "\n  non-optimal flipping: rounds " << nonoptimal_rounds << " (" << nonoptimal_between_rounds
+      << " between insertion rounds), non-improving flips " << nonoptimal_flips
       << ", non-LD facets " << nonld_facets_stuck << " when stuck -> " << nonld_facets_kept << " kept";
   if (algorithm == "gstar4d" || algorithm == "greg3d")
     s << "\n  " << algorithm << ": grid " << grid << "^3, working-set pairs " << working_set_pairs << ", stars "

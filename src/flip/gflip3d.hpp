@@ -1206,6 +1206,7 @@ class GFlip3D {
     append(stuck, carry_);
     set_of(stuck);
     st_.nonoptimal_rounds++;
+    st_.nonoptimal_between_rounds++;
     nonoptimal_round(stuck, with_log, /*other_edges=*/true);
     carry_ = std::move(active_);  // what the last flip loop left stuck (or none: no ear cut)
     append(carry_, stuck);
