@@ -850,6 +850,29 @@ case "$plan" in
     GDEL_FLIP_TRACE=1 bench s24b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     grep -h "tet reordering" /tmp/gpu-run-s24b_e8.log | tee -a "$out/summary.txt"
     ;;
+  s25a)  # session 25: a tet sort after every round by default (every second before); the
+          # independent-splits test asserts Stats::nonoptimal_between_rounds under the default
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step mesh 60 "$tbin/gpu_mesh"
+    GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
+    ;;
+  s25c)  # session 25, the other GPU tests (their own folder: the carry limit is 64 MiB)
+    step grid 120 "$tbin/gpu_grid"
+    GDEL_MODELS_DIR="$PWD/.deps/models" step models 120 "$tbin/gpu_models"  # carry .deps/models
+    step hostile 200 "$tbin/gpu_hostile"
+    ;;
+  s25b)  # session 25, benchmarks: uniform 10^7 default (a sort every round) against every second
+          # round, two rounds; every generator at 10^6; 10^8 once (trace: which sorts fit)
+    for r in 1 2; do
+      bench "s25b_def7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_REORDER_EVERY=2 bench "s25b_ev2_7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    bench s25b_gen 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_REORDER_EVERY=2 bench s25b_gen_ev2 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_FLIP_TRACE=1 bench s25b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    grep -h "tet reordering" /tmp/gpu-run-s25b_e8.log | tee -a "$out/summary.txt"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -52,9 +52,11 @@ struct FlipConfig {
   // output (ALGORITHMS.md §2.2): with curve-sorted points this restores spatial locality
   // in memory (Options::reorder_tets). Each sort only when its temporaries fit under the
   // memory peak so far (GFlip3D::reorder_tets). reorder_every = 0: the output's sort
-  // only. Test and study knobs GDEL_TET_REORDER=0/1 and GDEL_REORDER_EVERY (read by run()).
+  // only. Every round since session 25 (every second before: uniform 10^7 on an H200
+  // 0.717 -> 0.681 s at the same peak, bench/RESULTS.md session 24). Test and study
+  // knobs GDEL_TET_REORDER=0/1 and GDEL_REORDER_EVERY (read by run()).
   bool reorder_tets = false;
-  int reorder_every = 2;
+  int reorder_every = 1;
   // Non-optimal flipping once flipping is stuck at the end (Options::nonoptimal_flips):
   // at most nonoptimal_rounds rounds, each of at most nonoptimal_steps parallel steps of
   // non-improving flips followed by a normal flip loop. With independent_splits also one

@@ -78,8 +78,8 @@ inline void gflip_generator_cases(Backend b, std::size_t n) {
       EXPECT_TRUE(t1.failed_vertices.empty());
     }
     // the parallel rounds, with tet re-ordering (the default: between rounds when its
-    // temporaries fit under the peak, which they do here: a sort in every second round
-    // of more than two), unless the environment turns it off (GDEL_TET_REORDER=0)
+    // temporaries fit under the peak, which they do here: a sort after every round but
+    // the last), unless the environment turns it off (GDEL_TET_REORDER=0)
     o.cpu_rounds = true;
     Triangulation t = delaunay(pts, o);
     expect_flip_output_valid(pts, t, b);
