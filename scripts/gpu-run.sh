@@ -873,6 +873,13 @@ case "$plan" in
     GDEL_FLIP_TRACE=1 bench s25b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     grep -h "tet reordering" /tmp/gpu-run-s25b_e8.log | tee -a "$out/summary.txt"
     ;;
+  s25d)  # session 25, second benchmark call: s25b saw uniform and gaussian 10^6 12 % slower with a sort
+          # every round; the A/B again with every second round first, two rounds, and at 3*10^6
+    for r in 1 2; do
+      GDEL_REORDER_EVERY=2 bench "s25d_ev2_$r" 120 --dist uniform,gaussian,ball --n 1000000,3000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s25d_def_$r" 120 --dist uniform,gaussian,ball --n 1000000,3000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
