@@ -139,6 +139,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   cfg.reorder_tets = opt.reorder_tets;
   cfg.independent_splits = opt.independent_splits;
   cfg.sequential = one_point_per_round<B>(opt);
+  cfg.cavity = exact;  // the exact path inserts by cavities; gflip3d by flips (FlipConfig::cavity)
   flip::GFlip3D<B> alg(ctx, P, sid, m, cfg, st);
   if (opt.initial == Initial::grid) grid::grid_initial(ctx, alg, P, sid, m, lo, hi, opt, st);  // else: first tet
   alg.run();

@@ -38,6 +38,14 @@ struct FlipConfig {
   // Needs the default start (not Options::initial = grid); the other round options
   // (terminal, independent splits, non-optimal flips, tet reordering) do not apply.
   bool sequential = false;
+  // How one point per round inserts a point: true, by its conflict cavity (Bowyer-Watson:
+  // the tets whose circumsphere holds it replaced by the new tets of the cavity's
+  // boundary, bench/RESULTS.md session 26: ≈ 20 % less time than the flips); false, by a
+  // 1-4 split and flips (the classical flip-based algorithm). The same triangulation
+  // either way; gdel::delaunay takes the cavity for its exact algorithms and the flips for
+  // Algorithm::gflip3d (a flip algorithm, whose stats count flips). GDEL_CPU_INSERT=flip
+  // or =cavity overrides it (study).
+  bool cavity = false;
   std::int64_t max_flip_iterations = 1 << 20;  // per flip loop; a safety net, never reached in practice
   bool tail_rule = std::getenv("GDEL_FLIP_EVERY_ROUND") == nullptr;  // study knob (ALGORITHMS.md §3.1)
   // Independent splits (Options::independent_splits): in a round that flips, a tet that
@@ -221,6 +229,8 @@ class GFlip3D {
       if (const char* e = std::getenv("GDEL_CPU_PARALLEL_MIN")) k.parallel_min = std::max(1LL, std::atoll(e));
       if (const char* e = std::getenv("GDEL_CPU_FORCE_CONFLICT")) k.force_conflict = std::max(0LL, std::atoll(e));
       if (const char* e = std::getenv("GDEL_CPU_HOLD")) k.hold = std::max(1LL, std::atoll(e));
+      k.cavity = cfg_.cavity;
+      if (const char* e = std::getenv("GDEL_CPU_INSERT")) k.cavity = std::string(e) == "cavity";
       seq_ = std::make_unique<SequentialInsertion<B>>(mesh_, geo(), initial_slots(), k);
       seq_->run(todo_.data(), static_cast<std::int64_t>(todo_.size()));
       const SequentialCounts& c = seq_->counts();

@@ -13,8 +13,11 @@
 // alone: the theorem guarantees that the others' flips remove it. Inserted into a
 // Delaunay triangulation this way, every point leaves a Delaunay triangulation, so the
 // result is the exact Delaunay triangulation of the (symbolically perturbed) points with
-// no facet left for gDel3D's repair. Every decision is an exact predicate (filter, then
-// exact arithmetic + SoS) of flip::Geo, the same as gFlip3D's and the repair's.
+// no facet left for gDel3D's repair. Or (Knobs::cavity = FlipConfig::cavity, gdel3d's
+// default on the CPU) the point replaces its conflict cavity at once (Bowyer-Watson,
+// insert_cavity): the same triangulation with less work per point. Every decision is an
+// exact predicate (filter, then exact arithmetic + SoS) of flip::Geo, the same as
+// gFlip3D's and the repair's.
 //
 // Order: BRIO (Amenta-Choi-Rote): point q belongs to round ctz(hash(q)) (half the points
 // in round 0, a quarter in round 1, ...), rounds inserted from the highest down, each in
@@ -86,6 +89,7 @@ class SequentialInsertion {
     std::int64_t parallel_min = 1 << 12;
     std::int64_t force_conflict = 0;
     std::int64_t hold = 4;
+    bool cavity = false;  // FlipConfig::cavity (GDEL_CPU_INSERT=cavity / flip)
   };
 
   SequentialInsertion(mesh::TetMesh<B>& mesh, const Geo& g, std::int64_t reserve, Knobs k = {})
@@ -124,7 +128,7 @@ class SequentialInsertion {
       if (threads_ > 1 && e - s >= std::max<std::int64_t>(knobs_.parallel_min, threads_)) {
         parallel_round(order.data() + s, e - s);
       } else {
-        for (std::int64_t k = s; k < e; ++k) w0.insert(order[static_cast<std::size_t>(k)]);
+        for (std::int64_t k = s; k < e; ++k) w0.insert_point(order[static_cast<std::size_t>(k)]);
       }
     }
     for (Worker& w : workers_) {
@@ -137,6 +141,7 @@ class SequentialInsertion {
     workers_.clear();
     owner_.reset();
     logged_ = {};
+    mark_ = {};
   }
 
   // The records back into the mesh's arrays, compacted: the alive tets in slot order at
@@ -274,6 +279,7 @@ class SequentialInsertion {
     if (cap <= old) return;
     cells_.reserve(static_cast<std::size_t>(cap));  // keeps the contents
     cells_.resize(static_cast<std::size_t>(cap));
+    if (knobs_.cavity) mark_.resize(static_cast<std::size_t>(cap), 0);
     Cell* cs = cells_.data();
     par::parallel_for(mesh_.context(), cap - old, [=](std::int64_t k) {
       cs[old + k] = Cell{{kNoVertex, kNoVertex, kNoVertex, kNoVertex}, {-1, -1, -1, -1}};
@@ -311,7 +317,7 @@ class SequentialInsertion {
         static_cast<int>(threads_));
     w0.begin(false);
     for (Worker& w : workers_) {
-      for (vid_t q : w.deferred_) w0.insert(q);
+      for (vid_t q : w.deferred_) w0.insert_point(q);
       w.deferred_.clear();
     }
   }
@@ -379,15 +385,21 @@ class SequentialInsertion {
       cs_ = s_->cells_.data();
       own_ = s_->owner_.get();
       logged_ = s_->logged_.data();
+      mark_ = s_->mark_.data();
       force_ = parallel ? s_->knobs_.force_conflict : 0;
       hold_ = s_->knobs_.hold;
+      cavity_ = s_->knobs_.cavity;
     }
 
     // --- slots -------------------------------------------------------------------------
+    // A claimed slot is taken and flagged as logged without a copy: it held no tet, so an
+    // undo frees it again (try_insert) instead of restoring it, and its first write skips
+    // the log's read of the old record.
     tid_t claim() {
       tid_t t;
       if (!free_.empty()) {
         t = free_.back();
+        if (par_) take(t);  // before the pop: a conflict leaves the slot on the list
         free_.pop_back();
       } else {
         if (next_ == end_) {
@@ -404,15 +416,20 @@ class SequentialInsertion {
             if (b + kChunk > static_cast<std::int64_t>(s_->cells_.size())) {
               s_->grow(b + kChunk + static_cast<std::int64_t>(s_->cells_.size()) / 4);
               cs_ = s_->cells_.data();  // the records moved
+              mark_ = s_->mark_.data();
             }
             s_->hwm_.store(b + kChunk);
             next_ = b;
             end_ = b + kChunk;
           }
         }
+        if (par_) take(static_cast<tid_t>(next_));
         t = static_cast<tid_t>(next_++);
       }
-      if (par_) claimed_.push_back(t);
+      if (par_) {
+        logged_[static_cast<std::size_t>(t)] = 1;
+        claimed_.push_back(t);
+      }
       return t;
     }
     void kill(tid_t t) {
@@ -611,17 +628,137 @@ class SequentialInsertion {
       ++c_.inserted;
     }
 
+    // --- one point by its conflict cavity (Bowyer-Watson; Knobs::cavity) ---------------
+    // The tets whose circumsphere holds p (Geo::insphere > 0; with ∞: p beyond the hull
+    // face) form a connected region that holds p's tet and is star-shaped from p: in the
+    // lifted view they are the facets of the lower hull that lifted p sees, under the one
+    // consistent perturbation of Geo (SoS: no ties). It is found by a search over faces
+    // from p's tet, each tet tested once (mark_). Every face of the region's boundary gets
+    // a new tet, the face's tet with p in place of its vertex inside the region (p lies on
+    // that vertex's side of the face, so the orientation stays positive); two new tets
+    // meet across the face (p, a, b) of each boundary edge ab, matched through a hash of
+    // the edge. The region's slots are used again; the rest are claimed or freed. The
+    // result is the Delaunay triangulation of the points so far, as after the flips of
+    // insert(); the work per point is less (bench/RESULTS.md, session 26): each tet near p
+    // is tested once, no flip is decided (face_flip's orientations) and every new tet is
+    // written once instead of being made and flipped away again.
+    struct Bnd {
+      vid_t v[4];           // the new tet
+      std::int32_t outer;   // the tet across the boundary face (t << 2 | face), -1 none
+      std::int32_t face;    // the face's index in the new tet (p's slot)
+    };
+    struct Edge {
+      std::uint64_t key;
+      std::int32_t link;
+      std::uint32_t stamp;  // occupied iff == stamp_
+    };
+    void insert_cavity(vid_t p) {
+      const tid_t t0 = locate(p, newest_);
+      unmark();
+      rd(t0);
+      mark_[static_cast<std::size_t>(t0)] = 1;
+      seen_.push_back(t0);
+      cav_.push_back(t0);
+      for (std::size_t k = 0; k < cav_.size(); ++k) {
+        const Cell c = rd(cav_[k]);
+        for (int i = 0; i < 4; ++i) {
+          const std::int32_t e = c.n[i];
+          if (e >= 0) {
+            const tid_t u = tet_of(e);
+            const Cell& uc = rd(u);  // taken before its mark is read: another thread's search marks its own tets
+            std::uint8_t& m = mark_[static_cast<std::size_t>(u)];
+            if (m == 1) continue;  // inside: no boundary
+            if (m == 0) {
+              const bool in = insphere(uc.v, p) > 0;
+              m = in ? 1 : 2;
+              seen_.push_back(u);
+              if (in) {
+                cav_.push_back(u);
+                continue;
+              }
+            }
+          }
+          Bnd b{{c.v[0], c.v[1], c.v[2], c.v[3]}, e, i};
+          b.v[i] = p;
+          bnd_.push_back(b);
+        }
+      }
+      // slots: the region's own, then claimed ones (claims may move the records: no
+      // reference is held across them); a region larger than its boundary frees the rest
+      const std::size_t nb = bnd_.size(), nc = cav_.size();
+      slot_.assign(cav_.begin(), cav_.begin() + static_cast<std::ptrdiff_t>(std::min(nb, nc)));
+      for (std::size_t k = nc; k < nb; ++k) slot_.push_back(claim());
+      for (std::size_t k = nb; k < nc; ++k) kill(cav_[k]);
+      for (std::size_t k = 0; k < nb; ++k) wr(slot_[k]);  // taken and logged before the writes
+      if (++stamp_ == 0) {  // wrapped: every entry free again
+        for (Edge& x : ht_) x.stamp = 0;
+        stamp_ = 1;
+      }
+      std::size_t cap = 64;
+      while (cap < 4 * nb) cap <<= 1;
+      if (ht_.size() < cap) ht_.assign(cap, Edge{0, -1, 0});
+      const std::size_t mask = ht_.size() - 1;
+      for (std::size_t k = 0; k < nb; ++k) {
+        const Bnd& b = bnd_[k];
+        const tid_t t = slot_[k];
+        Cell& x = cs_[t];
+        for (int q = 0; q < 4; ++q) x.v[q] = b.v[q];
+        x.n[b.face] = b.outer;
+        back(b.outer, t, b.face);
+        for (int j = 0; j < 4; ++j) {
+          if (j == b.face) continue;
+          vid_t ab[2];
+          int na = 0;
+          for (int q = 0; q < 4; ++q)
+            if (q != j && q != b.face) ab[na++] = b.v[q];
+          const std::uint32_t lo = static_cast<std::uint32_t>(std::min(ab[0], ab[1]));
+          const std::uint32_t hi = static_cast<std::uint32_t>(std::max(ab[0], ab[1]));
+          const std::uint64_t key = std::uint64_t(hi) << 32 | lo;
+          for (std::size_t h = (lo * 0x9E3779B1u ^ hi * 0x85EBCA77u) & mask;; h = (h + 1) & mask) {
+            Edge& en = ht_[h];
+            if (en.stamp != stamp_) {
+              en = Edge{key, t << 2 | j, stamp_};
+              break;
+            }
+            if (en.key == key) {
+              x.n[j] = en.link;
+              cs_[tet_of(en.link)].n[face_of(en.link)] = t << 2 | j;
+              break;
+            }
+          }
+        }
+      }
+      newest_ = slot_[nb - 1];
+      unmark();
+      ++c_.inserted;
+    }
+    // The search's marks back to 0 (after the point, or an abort).
+    void unmark() {
+      for (tid_t t : seen_) mark_[static_cast<std::size_t>(t)] = 0;
+      seen_.clear();
+      cav_.clear();
+      bnd_.clear();
+    }
+    void insert_point(vid_t p) {
+      if (cavity_) insert_cavity(p);
+      else insert(p);
+    }
+
     // In a parallel round: insert p as a transaction; on a conflict, undo and defer it.
     void try_insert(vid_t p) {
       bool conflict = false;
       const tid_t newest0 = newest_;
       const SequentialCounts c0 = c_;
       try {
-        insert(p);
+        insert_point(p);
       } catch (const Conflict&) {
         conflict = true;
+        unmark();
         for (std::size_t k = undo_.size(); k-- > 0;) cs_[undo_[k].first] = undo_[k].second;
-        for (tid_t t : claimed_) free_.push_back(t);
+        for (tid_t t : claimed_) {
+          cs_[t] = Cell{{kNoVertex, kNoVertex, kNoVertex, kNoVertex}, {-1, -1, -1, -1}};
+          free_.push_back(t);
+        }
         freed_.clear();
         stack_.clear();
         newest_ = newest0;
@@ -631,6 +768,7 @@ class SequentialInsertion {
       }
       for (tid_t t : freed_) free_.push_back(t);
       freed_.clear();
+      for (tid_t t : claimed_) logged_[static_cast<std::size_t>(t)] = 0;
       claimed_.clear();
       for (const auto& u : undo_) logged_[static_cast<std::size_t>(u.first)] = 0;
       undo_.clear();
@@ -662,6 +800,14 @@ class SequentialInsertion {
     Cell* cs_ = nullptr;                  // the records (s_->cells_; moved only by a grow)
     std::atomic<std::uint8_t>* own_ = nullptr;
     std::uint8_t* logged_ = nullptr;
+    // Knobs::cavity: the region's tets, every tet tested (marked), the boundary faces,
+    // the new tets' slots, the edge table
+    bool cavity_ = false;
+    std::uint8_t* mark_ = nullptr;  // s_->mark_: 1 in the region, 2 tested outside
+    std::vector<tid_t> cav_, seen_, slot_;
+    std::vector<Bnd> bnd_;
+    std::vector<Edge> ht_;
+    std::uint32_t stamp_ = 0;
   };
 
   mesh::TetMesh<B>& mesh_;
@@ -670,6 +816,7 @@ class SequentialInsertion {
   std::atomic<std::int64_t> hwm_{0};  // slots [0, hwm) handed out (some as unused chunks)
   std::unique_ptr<std::atomic<std::uint8_t>[]> owner_;  // parallel rounds: holder of each block of tets
   std::vector<std::uint8_t> logged_;  // parallel rounds: tet logged in its holder's transaction
+  std::vector<std::uint8_t> mark_;    // Knobs::cavity: a tet's mark in its holder's search (0 between points)
   Knobs knobs_;
   unsigned threads_ = 1;
   std::vector<Worker> workers_;

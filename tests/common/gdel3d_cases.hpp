@@ -143,12 +143,13 @@ inline void gdel3d_exact_tiers_case(Backend b) {
 
 // One point per round (the CPU backend's default, flip/sequential.hpp) on several
 // threads: each insertion is a transaction that is undone and deferred when it meets
-// another thread's tets. Forced here with 4 threads, every round of over 64 points run
-// in parallel, a conflict forced at every 50th tet taken, blocks kept for 4 points or
-// released after each (GDEL_CPU_*): insertions
-// must have been deferred, and the triangulation must be the one of a single thread and
-// of the parallel rounds + repair, exactly Delaunay. Uniform, grid (exact ties) and
-// sphere (cospherical) points.
+// another thread's tets. Forced here with 4 threads, every round of over 64 points run in
+// parallel, a conflict forced at every 50th tet taken, blocks kept for 4 points or
+// released after each (GDEL_CPU_*): insertions must have been deferred, and the
+// triangulation must be the one of a single thread and of the parallel rounds + repair,
+// exactly Delaunay. gdel3d inserts by cavities; the forced run is repeated with split +
+// flips (GDEL_CPU_INSERT=flip, gflip3d's way). Uniform, grid (exact ties) and sphere
+// (cospherical) points.
 inline void gdel3d_threads_case(Backend b) {
   for (auto d : {gen::Distribution::Uniform, gen::Distribution::Grid, gen::Distribution::Sphere}) {
     SCOPED_TRACE(std::string(gen::to_string(d)));
@@ -162,6 +163,9 @@ inline void gdel3d_threads_case(Backend b) {
     ::setenv("GDEL_CPU_PARALLEL_MIN", "64", 1);
     ::setenv("GDEL_CPU_FORCE_CONFLICT", "50", 1);
     const Triangulation four = delaunay(pts, o);
+    ::setenv("GDEL_CPU_INSERT", "flip", 1);  // split + flips instead of the cavities (FlipConfig::cavity)
+    const Triangulation four_flips = delaunay(pts, o);
+    ::unsetenv("GDEL_CPU_INSERT");
     ::unsetenv("GDEL_CPU_FORCE_CONFLICT");
     const Triangulation natural = delaunay(pts, o);  // conflicts only where threads meet
     ::setenv("GDEL_CPU_HOLD", "1", 1);               // blocks released after every point
@@ -179,6 +183,11 @@ inline void gdel3d_threads_case(Backend b) {
     expect_exact_delaunay(pts, natural, b);
     EXPECT_EQ(four.tets, one.tets);
     EXPECT_EQ(four.neighbors, one.neighbors);
+    EXPECT_GT(four_flips.stats.points_deferred, 0);
+    EXPECT_GT(four_flips.stats.flips23, 0);  // it flipped; the cavities do not
+    EXPECT_EQ(four.stats.flips23 + four.stats.flips32, 0);
+    EXPECT_EQ(four_flips.tets, one.tets);
+    EXPECT_EQ(four_flips.neighbors, one.neighbors);
     EXPECT_EQ(natural.tets, one.tets);
     EXPECT_EQ(hold1.tets, one.tets);
     EXPECT_EQ(hold1.neighbors, one.neighbors);
