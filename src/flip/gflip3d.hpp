@@ -240,12 +240,12 @@ class GFlip3D {
       st_.exact_evaluations += c.exact;
       st_.points_deferred += c.deferred;
       todo_.release();
-      par::mark(ctx_, "insert + flip, one point per round");
+      par::mark(ctx_, k.cavity ? "insert by cavities, one point per round" : "insert + flip, one point per round");
       if (debug_) {
         mesh();  // written back
         check_mesh("after one-point-per-round insertion");
       }
-      stage("insertion + flipping, one point per round (CPU)", t0);
+      stage(k.cavity ? "insertion by cavities, one point per round (CPU)" : "insertion + flipping, one point per round (CPU)", t0);
     }
   }
 
