@@ -880,6 +880,33 @@ case "$plan" in
       bench "s25d_def_$r" 120 --dist uniform,gaussian,ball --n 1000000,3000000 --methods gdel3d-cuda-dev --repeat 5
     done
     ;;
+  s27a)  # session 27: the tet sort's interval by size (every round from 5*10^6 points, every second
+          # below). GPU tests under the new default, gpu_gflip3d also with GDEL_TET_REORDER=0
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step mesh 60 "$tbin/gpu_mesh"
+    GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
+    ;;
+  s27c)  # session 27, the other GPU tests (their own folder: the carry limit is 64 MiB)
+    step grid 120 "$tbin/gpu_grid"
+    GDEL_MODELS_DIR="$PWD/.deps/models" step models 120 "$tbin/gpu_models"  # carry .deps/models
+    step hostile 200 "$tbin/gpu_hostile"
+    ;;
+  s27b)  # session 27, benchmarks: the default (by size) against a sort every round, alternating, two
+          # rounds, every generator at 10^6 and uniform 3*10^6; uniform 10^7 (the default is every
+          # round there); per-round traces of sphere and grid 10^6 (where the flip iterations go)
+    for r in 1 2; do
+      bench "s27b_def_$r" 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_REORDER_EVERY=1 bench "s27b_ev1_$r" 120 --dist uniform,gaussian,thin_shell,ball,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s27b_def3_$r" 60 --dist uniform --n 3000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_REORDER_EVERY=1 bench "s27b_ev1_3_$r" 60 --dist uniform --n 3000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    bench s27b_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    for d in sphere grid; do
+      GDEL_FLIP_TRACE=1 bench "s27b_trace_$d" 60 --dist "$d" --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+      grep -h "gflip3d round" "/tmp/gpu-run-s27b_trace_$d.log" | tee -a "$out/summary.txt"
+    done
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

@@ -74,17 +74,19 @@ struct Options {
   // false (default): every tet holding points splits in every round (the original rule).
   bool independent_splits = false;
   // gFlip3D's parallel rounds (GPU, or CPU with cpu_rounds): sort tets by smallest
-  // vertex id after every insertion round and before the output, for memory locality;
+  // vertex id after every insertion round (every second one below 5*10^6 points) and
+  // before the output, for memory locality;
   // each sort only when its temporaries fit under the run's memory peak so far, so the
   // peak does not grow. On an H200: uniform 10^7 -7.5 %, 10^8 -8.7 %, every generator
   // at 10^6 faster (bench/RESULTS.md, session 23; a sort every second round then, every
-  // round since session 25: 10^7 a further -5 %). The result is the same set of tets;
+  // round from 5*10^6 points up since session 25: 10^7 a further -5 %). The result is the same set of tets;
   // gflip3d's flips (hence its output) can differ, as the slots' order decides the votes.
   // The environment variable GDEL_TET_REORDER=0/1 overrides this field.
   bool reorder_tets = true;
   // CPU backend: run gFlip3D in the thesis's parallel rounds, as on the GPU. Default
-  // (false): one point per round (docs/gflip3d.md): each point located by a walk, split
-  // in, and flipped to Delaunay before the next, which leaves the exact Delaunay
+  // (false): one point per round (docs/gflip3d.md): each point located by a walk and
+  // inserted before the next (gdel3d/Auto: its conflict cavity replaced, Bowyer-Watson;
+  // gflip3d: split in and flipped to Delaunay), which leaves the exact Delaunay
   // triangulation, so gdel3d has nothing to repair. That is several times faster on a few
   // cores; the rounds remain for study and comparison with the GPU. The rounds are used
   // anyway when an option above asks for them (terminal, non-optimal flips, independent
@@ -125,7 +127,7 @@ struct Stats {
   std::int64_t distinct_points = 0; // after removing exact duplicates
   std::int64_t rounds = 0;          // insertion rounds (one point per round: the points inserted)
   std::int64_t flip_iterations = 0; // parallel flipping iterations
-  std::int64_t flips23 = 0, flips32 = 0;
+  std::int64_t flips23 = 0, flips32 = 0;  // (0 for gdel3d's cavity insertion on the CPU)
   std::int64_t exact_evaluations = 0;  // items decided by the exact (non-filter) pass
   std::int64_t failed_vertices = 0;    // vertices of facets left not locally Delaunay (in the output)
   // Options::nonoptimal_flips: rounds run (those after insertion rounds included), of
