@@ -907,6 +907,24 @@ case "$plan" in
       grep -h "gflip3d round" "/tmp/gpu-run-s27b_trace_$d.log" | tee -a "$out/summary.txt"
     done
     ;;
+  s27d)  # session 27, s27b resolved no sign at 10^6 (uniform and gaussian each way once, ball
+          # 9-12 % slower with every second round): four more alternating rounds, the order swapped
+    for r in 1 2 3 4; do
+      GDEL_REORDER_EVERY=1 bench "s27d_ev1_$r" 60 --dist uniform,gaussian,ball --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_REORDER_EVERY=2 bench "s27d_ev2_$r" 60 --dist uniform,gaussian,ball --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    ;;
+  s27e)  # session 27: the small rounds' flip iterations (sphere 10^6 rounds 1-9: ~500 iterations,
+          # ~0.13 s for 0.44 M flips): kernel durations and grids of 200 launches past the first
+          # 3 000 (sphere, inside its small rounds) and of uniform 10^6 at the same depth
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    for d in sphere uniform; do
+      step "s27e_ncu_$d" 200 "$ncu" --clock-control none --kernel-name-base mangled --launch-skip 3000 --launch-count 200 \
+        --csv --metrics gpu__time_duration.sum,launch__grid_size,launch__block_size \
+        "$gb" --dist "$d" --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+      cp "/tmp/gpu-run-s27e_ncu_$d.log" "$out/ncu_$d.csv" 2>/dev/null
+    done
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;

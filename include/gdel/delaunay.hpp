@@ -74,12 +74,11 @@ struct Options {
   // false (default): every tet holding points splits in every round (the original rule).
   bool independent_splits = false;
   // gFlip3D's parallel rounds (GPU, or CPU with cpu_rounds): sort tets by smallest
-  // vertex id after every insertion round (every second one below 5*10^6 points) and
-  // before the output, for memory locality;
+  // vertex id after every insertion round and before the output, for memory locality;
   // each sort only when its temporaries fit under the run's memory peak so far, so the
   // peak does not grow. On an H200: uniform 10^7 -7.5 %, 10^8 -8.7 %, every generator
   // at 10^6 faster (bench/RESULTS.md, session 23; a sort every second round then, every
-  // round from 5*10^6 points up since session 25: 10^7 a further -5 %). The result is the same set of tets;
+  // round since session 25: 10^7 a further -5 %). The result is the same set of tets;
   // gflip3d's flips (hence its output) can differ, as the slots' order decides the votes.
   // The environment variable GDEL_TET_REORDER=0/1 overrides this field.
   bool reorder_tets = true;

@@ -60,14 +60,12 @@ struct FlipConfig {
   // output (ALGORITHMS.md §2.2): with curve-sorted points this restores spatial locality
   // in memory (Options::reorder_tets). Each sort only when its temporaries fit under the
   // memory peak so far (GFlip3D::reorder_tets). reorder_every = 0: the output's sort
-  // only; < 0 (the default): by size, every round from kReorderEveryRoundMin points up,
-  // every second round below (H200, bench/RESULTS.md sessions 24-25: at 10^7 every round
-  // 0.717 -> 0.681-0.697 s at the same peak, at 10^8 8.55 -> 8.32 s; at 10^6 and 3*10^6
-  // every second round 2-15 % faster). Test and study knobs GDEL_TET_REORDER=0/1 and
-  // GDEL_REORDER_EVERY (read by run()).
+  // only. Every round since session 25 (every second before: uniform 10^7 on an H200
+  // 0.717 -> 0.681 s at the same peak, bench/RESULTS.md session 24; below 5*10^6 points
+  // the interval makes no resolved difference, session 27). Test and study knobs
+  // GDEL_TET_REORDER=0/1 and GDEL_REORDER_EVERY (read by run()).
   bool reorder_tets = false;
-  int reorder_every = -1;
-  static constexpr std::int64_t kReorderEveryRoundMin = 5'000'000;
+  int reorder_every = 1;
   // Non-optimal flipping once flipping is stuck at the end (Options::nonoptimal_flips):
   // at most nonoptimal_rounds rounds, each of at most nonoptimal_steps parallel steps of
   // non-improving flips followed by a normal flip loop. With independent_splits also one
@@ -135,7 +133,6 @@ class GFlip3D {
     if (const char* e = std::getenv("GDEL_FLIP_LOG_RECORDS")) cfg_.log_records = std::max<long long>(1, std::atoll(e));
     if (const char* e = std::getenv("GDEL_TET_REORDER")) cfg_.reorder_tets = std::atoi(e) != 0;
     if (const char* e = std::getenv("GDEL_REORDER_EVERY")) cfg_.reorder_every = std::max(0, std::atoi(e));
-    if (cfg_.reorder_every < 0) cfg_.reorder_every = n_ >= FlipConfig::kReorderEveryRoundMin ? 1 : 2;
     if (const char* e = std::getenv("GDEL_FLIPS_PER_ITERATION"))
       cfg_.max_flips_per_iteration = std::max<long long>(1, std::atoll(e));
     trace_ = std::getenv("GDEL_FLIP_TRACE") != nullptr;
