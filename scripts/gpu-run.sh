@@ -850,14 +850,14 @@ case "$plan" in
     GDEL_FLIP_TRACE=1 bench s24b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     grep -h "tet reordering" /tmp/gpu-run-s24b_e8.log | tee -a "$out/summary.txt"
     ;;
-  s25a)  # session 25: a tet sort after every round by default (every second before); the
+  s25a|s27a)  # session 25: a tet sort after every round by default (every second before); the
           # independent-splits test asserts Stats::nonoptimal_between_rounds under the default
     step gflip3d 150 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
     step mesh 60 "$tbin/gpu_mesh"
     GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
     ;;
-  s25c)  # session 25, the other GPU tests (their own folder: the carry limit is 64 MiB)
+  s25c|s27c)  # session 25 (and 27), the other GPU tests (their own folder: the carry limit is 64 MiB)
     step grid 120 "$tbin/gpu_grid"
     GDEL_MODELS_DIR="$PWD/.deps/models" step models 120 "$tbin/gpu_models"  # carry .deps/models
     step hostile 200 "$tbin/gpu_hostile"
@@ -880,19 +880,8 @@ case "$plan" in
       bench "s25d_def_$r" 120 --dist uniform,gaussian,ball --n 1000000,3000000 --methods gdel3d-cuda-dev --repeat 5
     done
     ;;
-  s27a)  # session 27: the tet sort's interval by size (every round from 5*10^6 points, every second
-          # below). GPU tests under the new default, gpu_gflip3d also with GDEL_TET_REORDER=0
-    step gflip3d 150 "$tbin/gpu_gflip3d"
-    step gdel3d 200 "$tbin/gpu_gdel3d"
-    step mesh 60 "$tbin/gpu_mesh"
-    GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
-    ;;
-  s27c)  # session 27, the other GPU tests (their own folder: the carry limit is 64 MiB)
-    step grid 120 "$tbin/gpu_grid"
-    GDEL_MODELS_DIR="$PWD/.deps/models" step models 120 "$tbin/gpu_models"  # carry .deps/models
-    step hostile 200 "$tbin/gpu_hostile"
-    ;;
-  s27b)  # session 27, benchmarks: the default (by size) against a sort every round, alternating, two
+  s27b)  # session 27 (binaries of 5715df1, whose default was every second round below 5*10^6 points;
+          # with later binaries set GDEL_REORDER_EVERY=2 on the def steps), benchmarks: the default (by size) against a sort every round, alternating, two
           # rounds, every generator at 10^6 and uniform 3*10^6; uniform 10^7 (the default is every
           # round there); per-round traces of sphere and grid 10^6 (where the flip iterations go)
     for r in 1 2; do
