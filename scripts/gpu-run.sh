@@ -32,6 +32,11 @@ mkdir -p "$out"
 deadline=$(( $(date +%s) + ${GDEL_CALL_BUDGET:-570} ))  # the device kills a call at 600 s
 plan="${1:-tests}"
 shift || true
+# an unknown plan fails here, before any build (the case labels below: "  a|b)  # ...")
+if ! grep -qE "^  ([a-z0-9_]+\|)*${plan}(\|[a-z0-9_]+)*\)" "$0"; then
+  echo "unknown plan $plan" >&2
+  exit 1
+fi
 echo "== device: $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader 2>/dev/null)" \
   | tee "$out/summary.txt"
 echo "== host threads: $(nproc)" | tee -a "$out/summary.txt"
