@@ -919,6 +919,16 @@ case "$plan" in
       cp "/tmp/gpu-run-s27e_ncu_$d.log" "$out/ncu_$d.csv" 2>/dev/null
     done
     ;;
+  s27f)  # session 27: the large flip iterations of uniform 10^7 (bytes a flip moves per kernel): ncu
+          # durations, DRAM bytes and grids of 120 launches past the first 9 000
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    step s27f_ncu 300 "$ncu" --clock-control none --kernel-name-base mangled --launch-skip 9000 --launch-count 120 \
+      --csv --metrics gpu__time_duration.sum,dram__bytes_read.sum,dram__bytes_write.sum,launch__grid_size,lts__t_sectors_srcunit_tex.sum \
+      "$gb" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    cp /tmp/gpu-run-s27f_ncu.log "$out/ncu_e7.csv" 2>/dev/null
+    GDEL_FLIP_TRACE=1 bench s27f_trace 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    grep -h "gflip3d round" /tmp/gpu-run-s27f_trace.log | tee -a "$out/summary.txt"
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
