@@ -929,6 +929,13 @@ case "$plan" in
     GDEL_FLIP_TRACE=1 bench s27f_trace 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     grep -h "gflip3d round" /tmp/gpu-run-s27f_trace.log | tee -a "$out/summary.txt"
     ;;
+  s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
+          # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
+    for r in 1 2; do
+      bench "s27g_cav$r" 150 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal,cgal-par --repeat 3
+      GDEL_CPU_INSERT=flip bench "s27g_flip$r" 60 --dist uniform --n 1000000 --methods gdel3d-cpu --repeat 3
+    done
+    ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
     ;;
