@@ -141,6 +141,23 @@ inline void gflip_degenerate_cases(Backend b) {
   auto tiny = gen::uniform(300, 10);
   for (double& x : tiny) x *= 1e-100;
   expect_flip_output_valid(tiny, delaunay(tiny, o), b);
+  // a sliver whose rounded centroid lies on its plane (a property test's example: its
+  // interior points need x and z below ~2^-70): the kernel point is found elsewhere
+  const double e = std::ldexp(1.0, -126);
+  const std::vector<double> sliver = {0, 0, 0, 0, 0, e, 0, 1, 0, 1, 0, 1};
+  Triangulation ts = delaunay(sliver, o);
+  expect_flip_output_valid(sliver, ts, b);
+  EXPECT_EQ(ts.num_tets(), 1);
+  // four points one ulp apart around (1,1,1): no double lies strictly inside their
+  // tetrahedron, so there is no kernel point: a clear error, not a wrong answer
+  const double u = std::ldexp(1.0, -52);
+  const std::vector<double> ulp = {1, 1, 1, 1 + u, 1, 1, 1, 1 + u, 1, 1, 1, 1 + u};
+  try {
+    (void)delaunay(ulp, o);
+    ADD_FAILURE() << "no error for a tetrahedron without a representable interior point";
+  } catch (const Error& err) {
+    EXPECT_NE(std::string(err.what()).find("too thin"), std::string::npos) << err.what();
+  }
 }
 
 // Independent splits (Options::independent_splits): no two tets that share a
