@@ -601,8 +601,9 @@ class GFlip3D {
   // (0,0,2^-126), (0,1,0), (1,0,1), whose interior points need x and z below ~2^-70);
   // then barycentric weights 2^-e_i, normalised, over a grid of exponents: very unequal
   // weights put K near a vertex or an edge, where the spacing of doubles (finer near 0)
-  // can resolve the thickness. Each candidate is summed smallest term first and checked
-  // with exact orient3d. A tet whose interior holds no double at all (four points one ulp
+  // can resolve the thickness. Each candidate's coordinates are summed in order of
+  // increasing weight (tiny contributions are not lost against larger ones where those
+  // are 0) and checked with exact orient3d. A tet whose interior holds no double at all (four points one ulp
   // apart around (1,1,1)) still raises the error: documented in docs/gflip3d.md.
   void set_kernel_point(const vid_t t[4]) {
     std::vector<std::vector<double>> p;
