@@ -929,6 +929,25 @@ case "$plan" in
     GDEL_FLIP_TRACE=1 bench s27f_trace 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     grep -h "gflip3d round" /tmp/gpu-run-s27f_trace.log | tee -a "$out/summary.txt"
     ;;
+  s28a)  # session 28: the small flip iterations in one team (GDEL_TEAM_MAX, default 2048); the GPU
+          # tests under the default, with the team on every set (multi-chunk team sums) and never
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step mesh 60 "$tbin/gpu_mesh"
+    GDEL_TEAM_MAX=100000000 step gflip3d_all 150 "$tbin/gpu_gflip3d"
+    GDEL_TEAM_MAX=0 step gflip3d_none 150 "$tbin/gpu_gflip3d"
+    ;;
+  s28b)  # session 28, benchmarks: the team (default 2048, and 1024) against none (GDEL_TEAM_MAX=0),
+          # alternating, two rounds, at 10^6 on uniform, grid, sphere; uniform 10^7; 10^8 once (peak)
+    for r in 1 2; do
+      GDEL_TEAM_MAX=0 bench "s28b_none_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s28b_def_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_TEAM_MAX=1024 bench "s28b_1k_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    GDEL_TEAM_MAX=0 bench s28b_none7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s28b_def7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s28b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
           # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
     for r in 1 2; do

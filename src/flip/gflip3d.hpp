@@ -24,6 +24,7 @@
 #include "gdel/errors.hpp"
 #include "parallel/exact_batch.hpp"
 #include "parallel/primitives.hpp"
+#include "parallel/team.hpp"
 
 namespace gdel::flip {
 
@@ -115,7 +116,7 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), carry_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 5) {
+        active_(ctx), carry_(ctx), team_work_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 5) {
     counts_.memset(0);
     int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
     quarter_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_, geom::kQuarterScale);
@@ -863,6 +864,7 @@ class GFlip3D {
     st_.exact_evaluations += counts_.get(3);
     counts_.set(3, 0);
     tally_seen_ = 0;
+    team_work_.release();
   }
 
   // The flip iterations' exact passes count their items on the backend (no wait for the
@@ -898,6 +900,11 @@ class GFlip3D {
     const std::int64_t* alen = active_deferred_ ? counts_.data() + 4 : nullptr;
     Buffer<std::int32_t, B> prop(ctx_, static_cast<std::size_t>(na));
     std::int32_t* pp = prop.data();
+    if (na <= team_max_) {  // small: proposed and decided in one team (commit_flips)
+      active_deferred_ = false;
+      return commit_flips(A, na, prop, with_log, defer_active(), true, alen) > 0;
+    }
+    team_work_.release();  // (a large iteration: not part of its peak)
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(na));
     auto fast = [=] GDEL_LAMBDA(std::int64_t k) {
       if (alen && k >= *alen) {
@@ -921,6 +928,23 @@ class GFlip3D {
     return commit_flips(A, na, prop, with_log, defer_active()) > 0;
   }
 
+  // Active sets up to this many tets are proposed and decided in one team
+  // (par::team_run: one block on the GPU) instead of some fifteen launches
+  // (commit_flips). GDEL_TEAM_MAX sets it for measurements (0: never).
+  static std::int64_t team_max_setting() {
+    const char* e = std::getenv("GDEL_TEAM_MAX");
+    return e ? std::atoll(e) : kTeamMax;
+  }
+  static constexpr std::int64_t kTeamMax = 2048;
+  // The team's scratch for exact evaluations (a slice of geom::kPredicateWork doubles per
+  // thread); none on input whose evaluations all run in the integer stage.
+  double* team_work(const Geo& g) {
+    if (g.int_all) return nullptr;
+    const std::size_t want = static_cast<std::size_t>(par::team_size<B>()) * geom::kPredicateWork;
+    if (team_work_.size() < want) team_work_.resize(want);
+    return team_work_.data();
+  }
+
   // Executes proposals: pp[k] (propose_flip's code, < 0: none) is the flip proposed by
   // tet A[k] (distinct tets). Votes so that the accepted flips touch disjoint tets (the
   // smallest proposer wins each tet), executes them, repairs adjacency, and makes the
@@ -929,9 +953,11 @@ class GFlip3D {
   // The proposal codes (prop) are released once the records are built.
   // defer: the next active set's length stays on the backend (counts_[4], and
   // active_deferred_ set; active_ then has the set's bound as its size).
+  // propose (na <= team_max_ only): the proposals are not made yet; the team that decides
+  // makes them first, A[k] for k < min(na, *alen) (alen: a deferred active set's length).
   std::int64_t commit_flips(const tid_t* A, std::int64_t na, Buffer<std::int32_t, B>& prop, bool with_log,
-                            bool defer = false) {
-    const std::int32_t* pp = prop.data();
+                            bool defer = false, bool propose = false, const std::int64_t* alen = nullptr) {
+    std::int32_t* pp = prop.data();
     MeshView m = mesh_.view();
     const Geo g = geo();
     // proposers, and with independent splits the stuck tets (kStuckResult: faces not
@@ -962,45 +988,116 @@ class GFlip3D {
     }
     Buffer<std::int32_t, B> pl(ctx_, static_cast<std::size_t>(npb));
     std::int32_t* plp = pl.data();
-    par::select_indices_to(ctx_, static_cast<std::size_t>(na), plp, cn, is_proposer);
-    par::mark(ctx_, "flip: select proposers");
-    // vote: the smallest proposer index wins each tet, by an atomic max in aux_key_ of
-    // vote_stamp() | INT_MAX - index; accepted flips are disjoint. The stamp (this
-    // iteration's, above every earlier vote and flip stamp) spares a pass that would
-    // reset the votes.
     std::uint64_t* vote = aux_key_.data();
     marks_dirty_ = true;
     const std::uint64_t vstamp = vote_stamp();
-    par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
-      const std::int64_t k = plp[j];
-      if (pp[k] < 0) return;  // stuck
-      tid_t ts[3];
-      int nt = prop_tets(m, A[k], pp[k], ts);
-      for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
-    });
     Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(npb));
     std::int8_t* ap = acc.data();
-    par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
-      const std::int64_t k = plp[j];
-      tid_t ts[3];
-      int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
-      bool ok = nt > 0;
-      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == (vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
-      ap[j] = ok ? 1 : 0;
-    });
     Buffer<std::int32_t, B> fl(ctx_, static_cast<std::size_t>(npb));  // positions in pl, then in A
     std::int32_t* flp = fl.data();
-    par::select_indices_to(ctx_, static_cast<std::size_t>(npb), flp, cn + 1,
-                           [=] GDEL_LAMBDA(std::int64_t j) { return j < cn[0] && ap[j] != 0; });
     // 2-3 flips: each needs one new slot (o23: their exclusive offsets; cn[2]: how many)
     // (int32: at most np < 2^31 flips)
     Buffer<std::int32_t, B> off23(ctx_, static_cast<std::size_t>(npb + 1));
     std::int32_t* o23 = off23.data();
-    par::parallel_for(ctx_, npb + 1, [=] GDEL_LAMBDA(std::int64_t f) {
-      o23[f] = f < cn[1] && prop_type(pp[plp[flp[f]]]) == 1 ? 1 : 0;
-    });
-    par::exclusive_scan(ctx_, o23, o23, static_cast<std::size_t>(npb + 1));
-    par::parallel_for(ctx_, 1, [=] GDEL_LAMBDA(std::int64_t) { cn[2] = o23[cn[1]]; });
+    if (na <= team_max_) {
+      // One team does what the steps below do, with the same results: the lists come
+      // out of sums in index order. A small iteration's fifteen-odd launches were most of
+      // its time (bench/RESULTS.md, session 27: 29 kernels of 1.6-16 us each).
+      double* work = propose ? team_work(g) : nullptr;
+      par::team_run(ctx_, [=] GDEL_LAMBDA(const par::Team& tm) {
+        if (propose) {  // as flip_iteration's fast and exact passes, in one thread per tet
+          double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
+          const std::int64_t live = alen && *alen < na ? *alen : na;
+          std::int64_t nex = 0;
+          for (std::int64_t k = tm.rank(); k < na; k += tm.size()) {
+            int p = -1;
+            if (k < live) {
+              p = propose_flip<false>(g, m, A[k], nullptr);
+              if (p == kUndecidedResult) {
+                ++nex;
+                p = propose_flip<true>(g, m, A[k], nullptr);
+                if (p == kUndecidedResult) p = propose_flip<true>(g, m, A[k], w);
+              }
+            }
+            pp[k] = p;
+          }
+          if (nex) par::atomic_add(cn + 3, nex);
+          tm.sync();
+        }
+        const std::int64_t np = par::team_select(tm, na, plp, is_proposer);
+        for (std::int64_t j = tm.rank(); j < np; j += tm.size()) {
+          const std::int64_t k = plp[j];
+          if (pp[k] < 0) continue;  // stuck
+          tid_t ts[3];
+          const int nt = prop_tets(m, A[k], pp[k], ts);
+          for (int l = 0; l < nt; ++l)
+            par::atomic_max(vote + ts[l], vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+        }
+        tm.sync();
+        // accepted flips and the 2-3 flips among them, counted by one sum (high and low
+        // words: both below 2^31)
+        std::int64_t nf = 0, n2 = 0;
+        for (std::int64_t j0 = 0; j0 < np; j0 += tm.size()) {
+          const std::int64_t j = j0 + tm.rank();
+          bool ok = false;
+          bool is23 = false;
+          if (j < np) {
+            const std::int64_t k = plp[j];
+            tid_t ts[3];
+            const int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
+            ok = nt > 0;
+            for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == (vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+            ap[j] = ok ? 1 : 0;
+            is23 = ok && prop_type(pp[k]) == 1;
+          }
+          std::int64_t total = 0;
+          const std::int64_t at =
+              tm.exclusive_sum((ok ? std::int64_t(1) << 32 : std::int64_t(0)) | (is23 ? 1 : 0), &total);
+          if (ok) {
+            flp[nf + (at >> 32)] = static_cast<std::int32_t>(j);
+            o23[nf + (at >> 32)] = static_cast<std::int32_t>(n2 + (at & 0xffffffff));
+          }
+          nf += total >> 32;
+          n2 += total & 0xffffffff;
+        }
+        if (tm.rank() == 0) {
+          cn[0] = np;
+          cn[1] = nf;
+          cn[2] = n2;
+          o23[nf] = static_cast<std::int32_t>(n2);
+        }
+      });
+      par::mark(ctx_, propose ? "flip: propose + vote (team)" : "flip: vote (team)");
+    } else {
+      par::select_indices_to(ctx_, static_cast<std::size_t>(na), plp, cn, is_proposer);
+      par::mark(ctx_, "flip: select proposers");
+      // vote: the smallest proposer index wins each tet, by an atomic max in aux_key_ of
+      // vote_stamp() | INT_MAX - index; accepted flips are disjoint. The stamp (this
+      // iteration's, above every earlier vote and flip stamp) spares a pass that would
+      // reset the votes.
+      par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
+        const std::int64_t k = plp[j];
+        if (pp[k] < 0) return;  // stuck
+        tid_t ts[3];
+        int nt = prop_tets(m, A[k], pp[k], ts);
+        for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+      });
+      par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
+        const std::int64_t k = plp[j];
+        tid_t ts[3];
+        int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
+        bool ok = nt > 0;
+        for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == (vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+        ap[j] = ok ? 1 : 0;
+      });
+      par::select_indices_to(ctx_, static_cast<std::size_t>(npb), flp, cn + 1,
+                             [=] GDEL_LAMBDA(std::int64_t j) { return j < cn[0] && ap[j] != 0; });
+      par::parallel_for(ctx_, npb + 1, [=] GDEL_LAMBDA(std::int64_t f) {
+        o23[f] = f < cn[1] && prop_type(pp[plp[flp[f]]]) == 1 ? 1 : 0;
+      });
+      par::exclusive_scan(ctx_, o23, o23, static_cast<std::size_t>(npb + 1));
+      par::parallel_for(ctx_, 1, [=] GDEL_LAMBDA(std::int64_t) { cn[2] = o23[cn[1]]; });
+    }
     std::int64_t h[4];
     par::detail::Memory<B>::to_host(ctx_, h, cn, sizeof(h));
     const std::int64_t np = h[0];
@@ -1506,6 +1603,8 @@ class GFlip3D {
   Buffer<vid_t, B> todo_;      // uninserted points
   Buffer<tid_t, B> active_;
   Buffer<tid_t, B> carry_;  // between rounds: the tets the last flip loop left stuck
+  Buffer<double, B> team_work_;  // team_work(): the small flip iterations' exact scratch
+  std::int64_t team_max_ = team_max_setting();
   Buffer<std::uint64_t, B> aux_key_;  // per tet slot; see grow_aux for the three
   Buffer<std::int32_t, B> aux_pick_;
   bool marks_dirty_ = false;  // aux_key_ holds flip stamps
