@@ -11,12 +11,12 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <initializer_list>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/expect_error.hpp"
 #include "gdel/errors.hpp"
 #include "gen/generators.hpp"
 #include "io/io.hpp"
@@ -70,18 +70,7 @@ class IoTest : public ::testing::Test {
   fs::path dir_;
 };
 
-// Runs f, expects InvalidInput whose message contains every one of `parts`.
-void expect_invalid(const std::function<void()>& f, std::initializer_list<std::string> parts) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception; expected InvalidInput mentioning '" << *parts.begin() << "'";
-  } catch (const InvalidInput& e) {
-    const std::string msg = e.what();
-    for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "message: " << msg << "\nlacks: " << p;
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "wrong exception type: " << e.what();
-  }
-}
+using test::expect_error;
 
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   if (a.size() != b.size()) return false;
@@ -176,19 +165,20 @@ TEST_F(IoTest, XyzRoundTrip) {
 }
 
 TEST_F(IoTest, XyzMalformed) {
-  expect_invalid([&] { read_xyz(text("a.xyz", "1 2 3\n4 5 6 7\n")); },
-                 {"a.xyz:2:", "4 columns", "line 1", "has 3"});
-  expect_invalid([&] { read_xyz(text("b.xyz", "# c\n1 2 3 4\n\n1 2 3\n")); }, {"b.xyz:4:", "line 2"});
-  expect_invalid([&] { read_xyz(text("c.xyz", "1 2\n")); }, {"c.xyz:1:", "got 2"});
-  expect_invalid([&] { read_xyz(text("d.xyz", "1 2 3 4 5\n")); }, {"d.xyz:1:", "got 5"});
-  expect_invalid([&] { read_xyz(text("e.xyz", "1 2 3\n1 2.0abc 3\n")); }, {"e.xyz:2:", "y", "'2.0abc'", "not a valid number"});
-  expect_invalid([&] { read_xyz(text("f.xyz", "1,,2,3\n")); }, {"f.xyz:1:", "empty field"});
-  expect_invalid([&] { read_xyz(text("g.xyz", "1,2,3,\n")); }, {"g.xyz:1:", "trailing comma"});
-  expect_invalid([&] { read_xyz(text("h.xyz", ",1,2,3\n")); }, {"h.xyz:1:", "leading comma"});
-  expect_invalid([&] { read_xyz(text("i.xyz", "1 +-2 3\n")); }, {"i.xyz:1:", "'+-2'"});
-  expect_invalid([&] { read_xyz(text("j.xyz", "1 1e999 3\n")); }, {"j.xyz:1:", "'1e999'"});
-  expect_invalid([&] { read_xyz(text("k.xyz", "1 2 3 w\n")); }, {"k.xyz:1:", "weight"});
-  expect_invalid([&] { read_xyz(text("l.xyz", "1 2 \x01\n")); }, {"l.xyz:1:", "\\x01"});
+  expect_error<InvalidInput>([&] { read_xyz(text("a.xyz", "1 2 3\n4 5 6 7\n")); },
+                             {"a.xyz:2:", "4 columns", "line 1", "has 3"});
+  expect_error<InvalidInput>([&] { read_xyz(text("b.xyz", "# c\n1 2 3 4\n\n1 2 3\n")); }, {"b.xyz:4:", "line 2"});
+  expect_error<InvalidInput>([&] { read_xyz(text("c.xyz", "1 2\n")); }, {"c.xyz:1:", "got 2"});
+  expect_error<InvalidInput>([&] { read_xyz(text("d.xyz", "1 2 3 4 5\n")); }, {"d.xyz:1:", "got 5"});
+  expect_error<InvalidInput>([&] { read_xyz(text("e.xyz", "1 2 3\n1 2.0abc 3\n")); },
+                             {"e.xyz:2:", "y", "'2.0abc'", "not a valid number"});
+  expect_error<InvalidInput>([&] { read_xyz(text("f.xyz", "1,,2,3\n")); }, {"f.xyz:1:", "empty field"});
+  expect_error<InvalidInput>([&] { read_xyz(text("g.xyz", "1,2,3,\n")); }, {"g.xyz:1:", "trailing comma"});
+  expect_error<InvalidInput>([&] { read_xyz(text("h.xyz", ",1,2,3\n")); }, {"h.xyz:1:", "leading comma"});
+  expect_error<InvalidInput>([&] { read_xyz(text("i.xyz", "1 +-2 3\n")); }, {"i.xyz:1:", "'+-2'"});
+  expect_error<InvalidInput>([&] { read_xyz(text("j.xyz", "1 1e999 3\n")); }, {"j.xyz:1:", "'1e999'"});
+  expect_error<InvalidInput>([&] { read_xyz(text("k.xyz", "1 2 3 w\n")); }, {"k.xyz:1:", "weight"});
+  expect_error<InvalidInput>([&] { read_xyz(text("l.xyz", "1 2 \x01\n")); }, {"l.xyz:1:", "\\x01"});
 }
 
 // ---------------------------------------------------------------------------------------
@@ -229,20 +219,23 @@ TEST_F(IoTest, OffRoundTrip) {
 }
 
 TEST_F(IoTest, OffMalformed) {
-  expect_invalid([&] { read_off(text("a.off", "")); }, {"a.off", "empty file"});
-  expect_invalid([&] { read_off(text("b.off", "PLY\n1 0 0\n1 2 3\n")); }, {"b.off:1:", "keyword OFF", "'PLY'"});
-  expect_invalid([&] { read_off(text("c.off", "OFF\n3 0 0\n1 2 3\n4 5 6\n")); },
-                 {"c.off", "announces 3 vertices", "ends after 2"});
-  expect_invalid([&] { read_off(text("d.off", "OFF\n1 0 0\n1 2 3 4\n")); }, {"d.off:3:", "vertex 0", "got 4"});
-  expect_invalid([&] { read_off(text("e.off", "OFF\n1 0 0\n1 2\n")); }, {"e.off:3:", "got 2"});
-  expect_invalid([&] { read_off(text("f.off", "OFF\n-1 0 0\n")); }, {"f.off:2:", "vertex count", "'-1'"});
-  expect_invalid([&] { read_off(text("g.off", "OFF\nx 0 0\n")); }, {"g.off:2:", "'x'"});
-  expect_invalid([&] { read_off(text("h.off", "OFF\n1\n")); }, {"h.off:2:", "counts"});
-  expect_invalid([&] { read_off(text("i.off", "4OFF\n1 0 0\n1 2 3 4\n")); }, {"i.off:1:", "3-dimensional"});
-  expect_invalid([&] { read_off(text("j.off", "OFF BINARY\n")); }, {"j.off:1:", "binary OFF"});
-  expect_invalid([&] { read_off(text("k.off", "XOFF\n1 0 0\n1 2 3\n")); }, {"k.off:1:", "unknown OFF variant"});
-  expect_invalid([&] { read_off(text("l.off", "OFF\n1 0 0\n1 zz 3\n")); }, {"l.off:3:", "'zz'"});
-  expect_invalid([&] { read_off(text("m.off", "OFF\n")); }, {"m.off", "counts"});
+  expect_error<InvalidInput>([&] { read_off(text("a.off", "")); }, {"a.off", "empty file"});
+  expect_error<InvalidInput>([&] { read_off(text("b.off", "PLY\n1 0 0\n1 2 3\n")); },
+                             {"b.off:1:", "keyword OFF", "'PLY'"});
+  expect_error<InvalidInput>([&] { read_off(text("c.off", "OFF\n3 0 0\n1 2 3\n4 5 6\n")); },
+                             {"c.off", "announces 3 vertices", "ends after 2"});
+  expect_error<InvalidInput>([&] { read_off(text("d.off", "OFF\n1 0 0\n1 2 3 4\n")); },
+                             {"d.off:3:", "vertex 0", "got 4"});
+  expect_error<InvalidInput>([&] { read_off(text("e.off", "OFF\n1 0 0\n1 2\n")); }, {"e.off:3:", "got 2"});
+  expect_error<InvalidInput>([&] { read_off(text("f.off", "OFF\n-1 0 0\n")); }, {"f.off:2:", "vertex count", "'-1'"});
+  expect_error<InvalidInput>([&] { read_off(text("g.off", "OFF\nx 0 0\n")); }, {"g.off:2:", "'x'"});
+  expect_error<InvalidInput>([&] { read_off(text("h.off", "OFF\n1\n")); }, {"h.off:2:", "counts"});
+  expect_error<InvalidInput>([&] { read_off(text("i.off", "4OFF\n1 0 0\n1 2 3 4\n")); }, {"i.off:1:", "3-dimensional"});
+  expect_error<InvalidInput>([&] { read_off(text("j.off", "OFF BINARY\n")); }, {"j.off:1:", "binary OFF"});
+  expect_error<InvalidInput>([&] { read_off(text("k.off", "XOFF\n1 0 0\n1 2 3\n")); },
+                             {"k.off:1:", "unknown OFF variant"});
+  expect_error<InvalidInput>([&] { read_off(text("l.off", "OFF\n1 0 0\n1 zz 3\n")); }, {"l.off:3:", "'zz'"});
+  expect_error<InvalidInput>([&] { read_off(text("m.off", "OFF\n")); }, {"m.off", "counts"});
 }
 
 // ---------------------------------------------------------------------------------------
@@ -424,63 +417,66 @@ TEST_F(IoTest, PlyRoundTripAllFormats) {
 
 TEST_F(IoTest, PlyMalformedHeader) {
   const std::string ok_tail = "element vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 2 3\n";
-  expect_invalid([&] { read_ply(text("a.ply", "")); }, {"a.ply", "not a PLY file"});
-  expect_invalid([&] { read_ply(text("b.ply", "OFF\n")); }, {"b.ply", "not a PLY file"});
-  expect_invalid([&] { read_ply(text("c.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n")); },
-                 {"c.ply", "end_header"});
-  expect_invalid([&] { read_ply(text("d.ply", "ply\n" + ok_tail)); }, {"d.ply", "no 'format'"});
-  expect_invalid([&] { read_ply(text("e.ply", "ply\nformat binary_middle_endian 1.0\n" + ok_tail)); },
-                 {"e.ply:2:", "unsupported PLY format", "binary_middle_endian"});
-  expect_invalid([&] { read_ply(text("f.ply", "ply\nformat ascii 2.0\n" + ok_tail)); }, {"f.ply:2:", "version"});
-  expect_invalid(
-      [&] {
-        read_ply(text("g.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nend_header\n"));
-      },
+  expect_error<InvalidInput>([&] { read_ply(text("a.ply", "")); }, {"a.ply", "not a PLY file"});
+  expect_error<InvalidInput>([&] { read_ply(text("b.ply", "OFF\n")); }, {"b.ply", "not a PLY file"});
+  expect_error<InvalidInput>(
+      [&] { read_ply(text("c.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n")); },
+      {"c.ply", "end_header"});
+  expect_error<InvalidInput>([&] { read_ply(text("d.ply", "ply\n" + ok_tail)); }, {"d.ply", "no 'format'"});
+  expect_error<InvalidInput>([&] { read_ply(text("e.ply", "ply\nformat binary_middle_endian 1.0\n" + ok_tail)); },
+                             {"e.ply:2:", "unsupported PLY format", "binary_middle_endian"});
+  expect_error<InvalidInput>([&] { read_ply(text("f.ply", "ply\nformat ascii 2.0\n" + ok_tail)); },
+                             {"f.ply:2:", "version"});
+  expect_error<InvalidInput>(
+      [&] { read_ply(text("g.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nend_header\n")); },
       {"g.ply:4:", "unsupported property type", "float128"});
-  expect_invalid([&] { read_ply(text("h.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n")); },
-                 {"h.ply:3:", "property before any element"});
-  expect_invalid(
+  expect_error<InvalidInput>([&] { read_ply(text("h.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n")); },
+                             {"h.ply:3:", "property before any element"});
+  expect_error<InvalidInput>(
       [&] {
         read_ply(text("i.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int v\nend_header\n3 0 1 2\n"));
       },
       {"i.ply", "no 'element vertex'"});
-  expect_invalid(
+  expect_error<InvalidInput>(
       [&] {
         read_ply(text("j.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                                "property float red\nend_header\n1 2 3\n"));
       },
       {"j.ply", "no property 'z'", "x, y, red"});
-  expect_invalid(
+  expect_error<InvalidInput>(
       [&] {
         read_ply(text("k.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty list uchar float x\n"
                                "property float y\nproperty float z\nend_header\n1 1 2 3\n"));
       },
       {"k.ply", "'x' must be a scalar"});
-  expect_invalid(
+  expect_error<InvalidInput>(
       [&] {
         read_ply(text("l.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty list float int q\n" + ok_tail.substr(17)));
       },
       {"l.ply:4:", "count type must be an integer"});
-  expect_invalid([&] { read_ply(text("m.ply", "ply\nformat ascii 1.0\nelement vertex x\n")); },
-                 {"m.ply:3:", "bad count"});
-  expect_invalid([&] { read_ply(text("n.ply", "ply\nformat ascii 1.0\nelephant vertex 1\n")); },
-                 {"n.ply:3:", "unknown PLY header keyword", "elephant"});
+  expect_error<InvalidInput>([&] { read_ply(text("m.ply", "ply\nformat ascii 1.0\nelement vertex x\n")); },
+                             {"m.ply:3:", "bad count"});
+  expect_error<InvalidInput>([&] { read_ply(text("n.ply", "ply\nformat ascii 1.0\nelephant vertex 1\n")); },
+                             {"n.ply:3:", "unknown PLY header keyword", "elephant"});
 }
 
 TEST_F(IoTest, PlyMalformedAsciiBody) {
   const std::string h = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
                         "property float z\nproperty uchar red\nend_header\n";
   EXPECT_EQ(read_ply(text("ok.ply", h + "1 2 3 4\n5 6 7 255\n")).size(), 2u);
-  expect_invalid([&] { read_ply(text("a.ply", h + "1 2 3 4\n5 6\n")); },
-                 {"a.ply", "ends in element 'vertex' record 1", "property 'z'"});
-  expect_invalid([&] { read_ply(text("b.ply", h + "1 2 3 4\n5 six 7 8\n")); },
-                 {"b.ply:10:", "record 1", "'y'", "'six'"});
-  expect_invalid([&] { read_ply(text("c.ply", h + "1 2 3 4\n5 6 7 256\n")); }, {"c.ply:10:", "'256'", "uint8"});
-  expect_invalid([&] { read_ply(text("d.ply", h + "1 2 3 4.5\n5 6 7 8\n")); }, {"d.ply:9:", "'4.5'", "uint8"});
+  expect_error<InvalidInput>([&] { read_ply(text("a.ply", h + "1 2 3 4\n5 6\n")); },
+                             {"a.ply", "ends in element 'vertex' record 1", "property 'z'"});
+  expect_error<InvalidInput>([&] { read_ply(text("b.ply", h + "1 2 3 4\n5 six 7 8\n")); },
+                             {"b.ply:10:", "record 1", "'y'", "'six'"});
+  expect_error<InvalidInput>([&] { read_ply(text("c.ply", h + "1 2 3 4\n5 6 7 256\n")); },
+                             {"c.ply:10:", "'256'", "uint8"});
+  expect_error<InvalidInput>([&] { read_ply(text("d.ply", h + "1 2 3 4.5\n5 6 7 8\n")); },
+                             {"d.ply:9:", "'4.5'", "uint8"});
   const std::string hl = "ply\nformat ascii 1.0\nelement vertex 1\nproperty list char int n\nproperty float x\n"
                          "property float y\nproperty float z\nend_header\n";
-  expect_invalid([&] { read_ply(text("e.ply", hl + "-2 1 2 3\n")); }, {"e.ply:9:", "negative item count"});
-  expect_invalid([&] { read_ply(text("f.ply", hl + "3 1 2\n")); }, {"f.ply", "ends in element 'vertex' record 0"});
+  expect_error<InvalidInput>([&] { read_ply(text("e.ply", hl + "-2 1 2 3\n")); }, {"e.ply:9:", "negative item count"});
+  expect_error<InvalidInput>([&] { read_ply(text("f.ply", hl + "3 1 2\n")); },
+                             {"f.ply", "ends in element 'vertex' record 0"});
 }
 
 TEST_F(IoTest, PlyTruncatedBinary) {
@@ -490,25 +486,28 @@ TEST_F(IoTest, PlyTruncatedBinary) {
     const std::size_t body = full.find("end_header\n") + 11;
     // Cut inside the leading element, inside the vertices, and right after the vertices
     // (the faces are not read, so that one is fine).
-    expect_invalid([&] { read_ply(text("a.ply", full.substr(0, body + 5))); },
-                   {"a.ply", "element 'material'", "truncated"});
-    expect_invalid([&] { read_ply(text("b.ply", full.substr(0, full.size() - 20))); },
-                   {"b.ply", "element 'vertex' record 2", "truncated"});
+    expect_error<InvalidInput>([&] { read_ply(text("a.ply", full.substr(0, body + 5))); },
+                               {"a.ply", "element 'material'", "truncated"});
+    expect_error<InvalidInput>([&] { read_ply(text("b.ply", full.substr(0, full.size() - 20))); },
+                               {"b.ply", "element 'vertex' record 2", "truncated"});
     EXPECT_EQ(read_ply(text("c.ply", full.substr(0, full.size() - 13))).size(), 3u);
   }
   // A vertex count far beyond the data fails cleanly without a giant allocation.
   const std::string h = "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\n"
                         "property double x\nproperty double y\nproperty double z\nend_header\n";
-  expect_invalid([&] { read_ply(text("d.ply", h + std::string(48, '\0'))); }, {"d.ply", "record 2", "truncated"});
+  expect_error<InvalidInput>([&] { read_ply(text("d.ply", h + std::string(48, '\0'))); },
+                             {"d.ply", "record 2", "truncated"});
   // Fixed-size elements before the vertices are skipped in one jump; check the bound.
   const std::string h2 = "ply\nformat binary_big_endian 1.0\nelement junk 1000000000000\nproperty double a\n"
                          "element vertex 1\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
-  expect_invalid([&] { read_ply(text("e.ply", h2 + std::string(100, '\0'))); }, {"e.ply", "element 'junk' record 12"});
+  expect_error<InvalidInput>([&] { read_ply(text("e.ply", h2 + std::string(100, '\0'))); },
+                             {"e.ply", "element 'junk' record 12"});
   // A list longer than the data.
   const std::string h3 = "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty list uint uchar l\n"
                          "property float x\nproperty float y\nproperty float z\nend_header\n";
-  expect_invalid([&] { read_ply(text("f.ply", h3 + Bytes(false).put<std::uint32_t>(4000000000u).str() + "abcd")); },
-                 {"f.ply", "record 0", "truncated"});
+  expect_error<InvalidInput>(
+      [&] { read_ply(text("f.ply", h3 + Bytes(false).put<std::uint32_t>(4000000000u).str() + "abcd")); },
+      {"f.ply", "record 0", "truncated"});
 }
 
 // ---------------------------------------------------------------------------------------
@@ -553,19 +552,21 @@ TEST_F(IoTest, NodeRoundTrip) {
 }
 
 TEST_F(IoTest, NodeMalformed) {
-  expect_invalid([&] { read_node(text("a.node", "")); }, {"a.node", "empty file"});
-  expect_invalid([&] { read_node(text("b.node", "2 2 0 0\n")); }, {"b.node:1:", "dimension must be 3"});
-  expect_invalid([&] { read_node(text("c.node", "2 3 0 0\n0 0 0 0\n2 1 1 1\n")); },
-                 {"c.node:3:", "consecutive", "expected 1, got 2"});
-  expect_invalid([&] { read_node(text("d.node", "1 3 0 0\n5 0 0 0\n")); }, {"d.node:2:", "0 or 1"});
-  expect_invalid([&] { read_node(text("e.node", "1 3 1 0\n0 0 0 0\n")); }, {"e.node:2:", "expected 5 values", "got 4"});
-  expect_invalid([&] { read_node(text("f.node", "3 3 0 0\n0 0 0 0\n1 1 1 1\n")); },
-                 {"f.node", "announces 3 points", "ends after 2"});
-  expect_invalid([&] { read_node(text("g.node", "1 3 0 2\n")); }, {"g.node:1:", "boundary marker flag"});
-  expect_invalid([&] { read_node(text("h.node", "1 3 0 1\n0 0 0 0 0.5\n")); }, {"h.node:2:", "boundary marker", "'0.5'"});
-  expect_invalid([&] { read_node(text("i.node", "1\n")); }, {"i.node:1:", "header"});
-  expect_invalid([&] { read_node(text("j.node", "1 3\n0 0 0 q\n")); }, {"j.node:2:", "z", "'q'"});
-  expect_invalid([&] { read_node(text("k.node", "1.5 3\n")); }, {"k.node:1:", "point count"});
+  expect_error<InvalidInput>([&] { read_node(text("a.node", "")); }, {"a.node", "empty file"});
+  expect_error<InvalidInput>([&] { read_node(text("b.node", "2 2 0 0\n")); }, {"b.node:1:", "dimension must be 3"});
+  expect_error<InvalidInput>([&] { read_node(text("c.node", "2 3 0 0\n0 0 0 0\n2 1 1 1\n")); },
+                             {"c.node:3:", "consecutive", "expected 1, got 2"});
+  expect_error<InvalidInput>([&] { read_node(text("d.node", "1 3 0 0\n5 0 0 0\n")); }, {"d.node:2:", "0 or 1"});
+  expect_error<InvalidInput>([&] { read_node(text("e.node", "1 3 1 0\n0 0 0 0\n")); },
+                             {"e.node:2:", "expected 5 values", "got 4"});
+  expect_error<InvalidInput>([&] { read_node(text("f.node", "3 3 0 0\n0 0 0 0\n1 1 1 1\n")); },
+                             {"f.node", "announces 3 points", "ends after 2"});
+  expect_error<InvalidInput>([&] { read_node(text("g.node", "1 3 0 2\n")); }, {"g.node:1:", "boundary marker flag"});
+  expect_error<InvalidInput>([&] { read_node(text("h.node", "1 3 0 1\n0 0 0 0 0.5\n")); },
+                             {"h.node:2:", "boundary marker", "'0.5'"});
+  expect_error<InvalidInput>([&] { read_node(text("i.node", "1\n")); }, {"i.node:1:", "header"});
+  expect_error<InvalidInput>([&] { read_node(text("j.node", "1 3\n0 0 0 q\n")); }, {"j.node:2:", "z", "'q'"});
+  expect_error<InvalidInput>([&] { read_node(text("k.node", "1.5 3\n")); }, {"k.node:1:", "point count"});
 }
 
 TEST_F(IoTest, TetgenRoundTrip) {
@@ -599,15 +600,21 @@ TEST_F(IoTest, EleNeighOneBasedAndMalformed) {
   EXPECT_EQ(read_ele(text("a.ele", "# c\n2 4 1\n1 1 2 3 4 0.5\n2 2 3 4 5 7\n")), (std::vector<vid_t>{0, 1, 2, 3, 1, 2, 3, 4}));
   EXPECT_EQ(read_neigh(text("a.neigh", "2 4\n1 2 -1 -1 -1\n2 -1 1 -1 -1\n")),
             (std::vector<tid_t>{1, -1, -1, -1, -1, 0, -1, -1}));
-  expect_invalid([&] { read_ele(text("b.ele", "1 10 0\n")); }, {"b.ele:1:", "only 4 nodes"});
-  expect_invalid([&] { read_ele(text("c.ele", "1 4 0\n1 0 1 2 3\n")); }, {"c.ele:2:", "vertex id 0", "1-based"});
-  expect_invalid([&] { read_ele(text("d.ele", "2 4 0\n0 0 1 2 3\n")); }, {"d.ele", "announces 2 tetrahedra", "ends after 1"});
-  expect_invalid([&] { read_ele(text("e.ele", "1 4 0\n0 0 1 2\n")); }, {"e.ele:2:", "expected 5 values"});
-  expect_invalid([&] { read_ele(text("f.ele", "1 4 0\n0 0 1 2 99999999999\n")); }, {"f.ele:2:", "out of range"});
-  expect_invalid([&] { read_neigh(text("b.neigh", "1 4\n0 1 -1 -1 -1\n")); }, {"b.neigh:2:", "neighbour 1"});
-  expect_invalid([&] { read_neigh(text("c.neigh", "1 4\n1 0 -1 -1 -1\n")); }, {"c.neigh:2:", "neighbour 0"});
-  expect_invalid([&] { read_neigh(text("d.neigh", "1 3\n")); }, {"d.neigh:1:", "expected 4 neighbours"});
-  expect_invalid([&] { read_neigh(text("e.neigh", "1 4\n0 -2 -1 -1 -1\n")); }, {"e.neigh:2:", "neighbour -2"});
+  expect_error<InvalidInput>([&] { read_ele(text("b.ele", "1 10 0\n")); }, {"b.ele:1:", "only 4 nodes"});
+  expect_error<InvalidInput>([&] { read_ele(text("c.ele", "1 4 0\n1 0 1 2 3\n")); },
+                             {"c.ele:2:", "vertex id 0", "1-based"});
+  expect_error<InvalidInput>([&] { read_ele(text("d.ele", "2 4 0\n0 0 1 2 3\n")); },
+                             {"d.ele", "announces 2 tetrahedra", "ends after 1"});
+  expect_error<InvalidInput>([&] { read_ele(text("e.ele", "1 4 0\n0 0 1 2\n")); }, {"e.ele:2:", "expected 5 values"});
+  expect_error<InvalidInput>([&] { read_ele(text("f.ele", "1 4 0\n0 0 1 2 99999999999\n")); },
+                             {"f.ele:2:", "out of range"});
+  expect_error<InvalidInput>([&] { read_neigh(text("b.neigh", "1 4\n0 1 -1 -1 -1\n")); },
+                             {"b.neigh:2:", "neighbour 1"});
+  expect_error<InvalidInput>([&] { read_neigh(text("c.neigh", "1 4\n1 0 -1 -1 -1\n")); },
+                             {"c.neigh:2:", "neighbour 0"});
+  expect_error<InvalidInput>([&] { read_neigh(text("d.neigh", "1 3\n")); }, {"d.neigh:1:", "expected 4 neighbours"});
+  expect_error<InvalidInput>([&] { read_neigh(text("e.neigh", "1 4\n0 -2 -1 -1 -1\n")); },
+                             {"e.neigh:2:", "neighbour -2"});
 }
 
 // ---------------------------------------------------------------------------------------
@@ -616,13 +623,14 @@ TEST_F(IoTest, EleNeighOneBasedAndMalformed) {
 
 TEST_F(IoTest, DispatchAndFileErrors) {
   text("p.foo", "1 2 3\n");
-  expect_invalid([&] { read_points(file("p.foo")); }, {"p.foo", "unknown point file extension", "'.foo'", ".ply"});
+  expect_error<InvalidInput>([&] { read_points(file("p.foo")); },
+                             {"p.foo", "unknown point file extension", "'.foo'", ".ply"});
   text("noext", "1 2 3\n");
-  expect_invalid([&] { read_points(file("noext")); }, {"noext", "(none)"});
-  expect_invalid([&] { read_points(file("missing.xyz")); }, {"cannot read", "missing.xyz", "No such file"});
-  expect_invalid([&] { read_ply(file("missing.ply")); }, {"missing.ply", "No such file"});
+  expect_error<InvalidInput>([&] { read_points(file("noext")); }, {"noext", "(none)"});
+  expect_error<InvalidInput>([&] { read_points(file("missing.xyz")); }, {"cannot read", "missing.xyz", "No such file"});
+  expect_error<InvalidInput>([&] { read_ply(file("missing.ply")); }, {"missing.ply", "No such file"});
   fs::create_directories(file("adir.xyz"));
-  expect_invalid([&] { read_points(file("adir.xyz")); }, {"adir.xyz", "directory"});
+  expect_error<InvalidInput>([&] { read_points(file("adir.xyz")); }, {"adir.xyz", "directory"});
   // A .node extension with uppercase letters dispatches too.
   text("q.NoDe", "1 3\n0 1 2 3\n");
   EXPECT_EQ(read_points(file("q.NoDe")).xyz, (std::vector<double>{1, 2, 3}));
@@ -634,20 +642,59 @@ TEST_F(IoTest, DispatchAndFileErrors) {
 
 TEST_F(IoTest, WriterArgumentChecks) {
   const std::vector<double> xyz = {0, 0, 0, 1, 1, 1};
-  expect_invalid([&] { write_node(file("a.node"), std::vector<double>{1, 2}); }, {"a.node", "multiple of 3"});
-  expect_invalid([&] { write_xyz(file("b.xyz"), xyz, std::vector<double>{1}); }, {"b.xyz", "1 weights for 2 points"});
-  expect_invalid([&] { write_ply(file("c.ply"), std::vector<double>{0, NAN, 0}); }, {"c.ply", "point 0", "non-finite"});
-  expect_invalid([&] { write_node(file("d.node"), xyz, std::vector<double>{0, INFINITY}); },
-                 {"d.node", "point 1", "non-finite weight"});
-  expect_invalid([&] { write_ele(file("e.ele"), std::vector<vid_t>{0, 1, 2}); }, {"e.ele", "multiple of 4"});
-  expect_invalid([&] { write_ele(file("f.ele"), std::vector<vid_t>{0, 1, 2, -3}); }, {"f.ele", "tetrahedron 0", "-3"});
-  expect_invalid([&] { write_ele(file("g.ele"), std::vector<vid_t>{0, 1, 2, 3}, 3); }, {"g.ele", "vertex id 3"});
-  expect_invalid([&] { write_neigh(file("h.neigh"), std::vector<tid_t>{0, 1, -1, -1}); }, {"h.neigh", "neighbour 1"});
-  expect_invalid([&] { write_neigh(file("i.neigh"), std::vector<tid_t>{-2, -1, -1, -1}); }, {"i.neigh", "neighbour -2"});
-  expect_invalid([&] { write_tetgen(file("j"), xyz, std::vector<vid_t>{0, 1, 2, 3}, {}); }, {"j.ele", "vertex id 2"});
-  expect_invalid([&] { write_tetgen(file("k"), std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1},
-                                    std::vector<vid_t>{0, 1, 2, 3}, std::vector<tid_t>{-1, -1}); },
-                 {"k.neigh", "multiple of 4"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_node(file("a.node"), std::vector<double>{1, 2});
+      },
+      {"a.node", "multiple of 3"});
+  expect_error<InvalidInput>([&] { write_xyz(file("b.xyz"), xyz, std::vector<double>{1}); },
+                             {"b.xyz", "1 weights for 2 points"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_ply(file("c.ply"), std::vector<double>{0, NAN, 0});
+      },
+      {"c.ply", "point 0", "non-finite"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_node(file("d.node"), xyz, std::vector<double>{0, INFINITY});
+      },
+      {"d.node", "point 1", "non-finite weight"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_ele(file("e.ele"), std::vector<vid_t>{0, 1, 2});
+      },
+      {"e.ele", "multiple of 4"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_ele(file("f.ele"), std::vector<vid_t>{0, 1, 2, -3});
+      },
+      {"f.ele", "tetrahedron 0", "-3"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_ele(file("g.ele"), std::vector<vid_t>{0, 1, 2, 3}, 3);
+      },
+      {"g.ele", "vertex id 3"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_neigh(file("h.neigh"), std::vector<tid_t>{0, 1, -1, -1});
+      },
+      {"h.neigh", "neighbour 1"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_neigh(file("i.neigh"), std::vector<tid_t>{-2, -1, -1, -1});
+      },
+      {"i.neigh", "neighbour -2"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_tetgen(file("j"), xyz, std::vector<vid_t>{0, 1, 2, 3}, {});
+      },
+      {"j.ele", "vertex id 2"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_tetgen(file("k"), std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, std::vector<vid_t>{0, 1, 2, 3},
+                     std::vector<tid_t>{-1, -1});
+      },
+      {"k.neigh", "multiple of 4"});
   // Nothing was created by the failed writers, not even temporary files.
   EXPECT_TRUE(listing().empty()) << listing().front();
 }
@@ -663,13 +710,17 @@ TEST_F(IoTest, FailedWriterLeavesExistingFileIntact) {
   const std::size_t n = 200000;
   std::vector<double> xyz = gen::uniform(n, 3);
   xyz[3 * (n - 1) + 1] = NAN;
-  expect_invalid([&] { write_node(file("keep.node"), xyz); }, {"keep.node", "point 199999", "non-finite"});
+  expect_error<InvalidInput>([&] { write_node(file("keep.node"), xyz); }, {"keep.node", "point 199999", "non-finite"});
   std::vector<vid_t> tets(4 * n, 1);
   tets[4 * (n - 1) + 2] = -1;
-  expect_invalid([&] { write_ele(file("keep.ele"), tets); }, {"keep.ele", "tetrahedron 199999"});
+  expect_error<InvalidInput>([&] { write_ele(file("keep.ele"), tets); }, {"keep.ele", "tetrahedron 199999"});
   // write_tetgen validates up front: nothing of the set changes.
   text("set.node", old_node);
-  expect_invalid([&] { write_tetgen(file("set"), xyz, std::vector<vid_t>{0, 1, 2, 3}, {}); }, {"set.node", "non-finite"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_tetgen(file("set"), xyz, std::vector<vid_t>{0, 1, 2, 3}, {});
+      },
+      {"set.node", "non-finite"});
   EXPECT_EQ(slurp(file("keep.node")), old_node);
   EXPECT_EQ(slurp(file("keep.ele")), old_ele);
   EXPECT_EQ(slurp(file("set.node")), old_node);
@@ -683,14 +734,8 @@ TEST_F(IoTest, FailedWriterLeavesExistingFileIntact) {
 
 TEST_F(IoTest, WriterFileSystemErrors) {
   // Missing directory: gdel::Error naming the target and the reason; nothing created.
-  try {
-    write_xyz(file("no/such/dir/p.xyz"), std::vector<double>{1, 2, 3});
-    ADD_FAILURE() << "no exception";
-  } catch (const Error& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find("p.xyz"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("No such file or directory"), std::string::npos) << msg;
-  }
+  expect_error<Error>([&] { write_xyz(file("no/such/dir/p.xyz"), std::vector<double>{1, 2, 3}); },
+                      {"p.xyz", "No such file or directory"});
   // Target is an existing directory: the rename fails, the directory survives, no temp left.
   fs::create_directories(file("d.xyz"));
   EXPECT_THROW(write_xyz(file("d.xyz"), std::vector<double>{1, 2, 3}), Error);

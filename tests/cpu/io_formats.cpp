@@ -13,7 +13,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <initializer_list>
 #include <map>
 #include <random>
@@ -21,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "common/expect_error.hpp"
 #include "gdel/errors.hpp"
 #include "gen/generators.hpp"
 #include "io/io.hpp"
@@ -76,15 +76,7 @@ class FormatTest : public ::testing::Test {
   fs::path dir_;
 };
 
-void expect_invalid(const std::function<void()>& f, std::initializer_list<std::string> parts) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception; expected InvalidInput mentioning '" << *parts.begin() << "'";
-  } catch (const InvalidInput& e) {
-    const std::string msg = e.what();
-    for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "message: " << msg << "\nlacks: " << p;
-  }
-}
+using test::expect_error;
 
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   if (a.size() != b.size()) return false;
@@ -263,11 +255,11 @@ TEST_F(FormatTest, NpyFortranOrderWeightsVersionsAndOddHeaders) {
   EXPECT_EQ(read_npy(bytes_file("b.npy", npy(dict("<i8", "(1, 3)"), raw_bytes(big)))).xyz,
             (std::vector<double>{std::ldexp(1.0, 60), -std::ldexp(1.0, 53), std::ldexp(1.0, 53)}));
   const std::vector<std::int64_t> inexact = {1, 2, 9007199254740993};
-  expect_invalid([&] { read_npy(bytes_file("c.npy", npy(dict("<i8", "(1, 3)"), raw_bytes(inexact)))); },
-                 {"c.npy", "element 2", "9007199254740993", "exactly"});
+  expect_error<InvalidInput>([&] { read_npy(bytes_file("c.npy", npy(dict("<i8", "(1, 3)"), raw_bytes(inexact)))); },
+                             {"c.npy", "element 2", "9007199254740993", "exactly"});
   const std::vector<std::uint64_t> uinexact = {1, 2, ~std::uint64_t{0}};
-  expect_invalid([&] { read_npy(bytes_file("d.npy", npy(dict("<u8", "(1, 3)"), raw_bytes(uinexact)))); },
-                 {"d.npy", "element 2", "18446744073709551615"});
+  expect_error<InvalidInput>([&] { read_npy(bytes_file("d.npy", npy(dict("<u8", "(1, 3)"), raw_bytes(uinexact)))); },
+                             {"d.npy", "element 2", "18446744073709551615"});
   // Dispatch by extension, any case.
   bytes_file("UP.NPY", npy(dict("<f8", "(1, 3)"), raw_bytes(one)));
   EXPECT_EQ(read_points(file("UP.NPY")).xyz, one);
@@ -275,8 +267,8 @@ TEST_F(FormatTest, NpyFortranOrderWeightsVersionsAndOddHeaders) {
 
 TEST_F(FormatTest, NpyMalformed) {
   const std::string d3 = raw_bytes(std::vector<double>{1, 2, 3});
-  auto bad = [&](const std::string& content, std::initializer_list<std::string> parts) {
-    expect_invalid([&] { read_npy(bytes_file("x.npy", content)); }, parts);
+  auto bad = [&](const std::string& content, std::initializer_list<std::string_view> parts) {
+    expect_error<InvalidInput>([&] { read_npy(bytes_file("x.npy", content)); }, parts);
   };
   bad("", {"x.npy", "magic"});
   bad("1 2 3\n", {"x.npy", "not a NumPy .npy file"});
@@ -330,7 +322,11 @@ TEST_F(FormatTest, NpyWriterRoundTripAndHeaderLayout) {
   EXPECT_EQ(s.substr(10, dict_text.size()), dict_text);
   EXPECT_EQ(s.size(), 10 + hlen + 1000 * 4 * 8);
   // Non-finite points are refused before any file exists.
-  expect_invalid([&] { write_npy(file("bad.npy"), std::vector<double>{0, NAN, 0}); }, {"bad.npy", "non-finite"});
+  expect_error<InvalidInput>(
+      [&] {
+        write_npy(file("bad.npy"), std::vector<double>{0, NAN, 0});
+      },
+      {"bad.npy", "non-finite"});
   EXPECT_FALSE(fs::exists(file("bad.npy")));
 }
 
@@ -360,14 +356,15 @@ TEST_F(FormatTest, WeightsTextAndNpy) {
   EXPECT_EQ(read_weights(bytes_file("w.txt", "# weights\n0.5\n\n  -2e3  # comment\n\r\n7\r\n")),
             (std::vector<double>{0.5, -2000, 7}));
   EXPECT_TRUE(read_weights(bytes_file("empty.txt", "")).empty());
-  expect_invalid([&] { read_weights(bytes_file("two.txt", "1\n2 3\n")); }, {"two.txt:2:", "one weight per line", "got 2"});
-  expect_invalid([&] { read_weights(bytes_file("nan.txt", "1\nabc\n")); }, {"nan.txt:2:", "'abc'"});
-  expect_invalid([&] { read_weights(file("missing.txt")); }, {"missing.txt", "No such file"});
+  expect_error<InvalidInput>([&] { read_weights(bytes_file("two.txt", "1\n2 3\n")); },
+                             {"two.txt:2:", "one weight per line", "got 2"});
+  expect_error<InvalidInput>([&] { read_weights(bytes_file("nan.txt", "1\nabc\n")); }, {"nan.txt:2:", "'abc'"});
+  expect_error<InvalidInput>([&] { read_weights(file("missing.txt")); }, {"missing.txt", "No such file"});
   const std::vector<double> w = {1.5, -2, 0};
   EXPECT_EQ(read_weights(bytes_file("w.npy", npy(dict("<f8", "(3,)"), raw_bytes(w)))), w);
   EXPECT_EQ(read_weights(bytes_file("w1.npy", npy(dict("<f8", "(3, 1)"), raw_bytes(w)))), w);
-  expect_invalid([&] { read_weights(bytes_file("w2.npy", npy(dict("<f8", "(1, 3)"), raw_bytes(w)))); },
-                 {"w2.npy", "shape (1, 3)", "one value per point"});
+  expect_error<InvalidInput>([&] { read_weights(bytes_file("w2.npy", npy(dict("<f8", "(1, 3)"), raw_bytes(w)))); },
+                             {"w2.npy", "shape (1, 3)", "one value per point"});
 }
 
 // ---------------------------------------------------------------------------------------
@@ -721,13 +718,17 @@ TEST_F(FormatTest, MeshWritersValidateBeforeCreatingAnyFile) {
   nan_xyz[7] = NAN;
   for (const char* name : {"a.vtu", "a.mesh", "a.npz", "a.ele"}) {
     SCOPED_TRACE(name);
-    expect_invalid([&] { write_mesh(file(name), m.xyz, bad_tets); }, {"tetrahedron 0", "vertex id 5"});
-    expect_invalid([&] { write_mesh(file(name), nan_xyz, m.tets); }, {"point 2", "non-finite"});
-    expect_invalid([&] { write_mesh(file(name), m.xyz, m.tets, bad_neigh); }, {"neighbour 2"});
-    expect_invalid([&] { write_mesh(file(name), m.xyz, m.tets, std::vector<tid_t>{-1, -1, -1, -1}); },
-                   {"1 neighbour rows for 2 tetrahedra"});
-    expect_invalid([&] { write_mesh(file(name), m.xyz, std::vector<vid_t>{0, 1, 2}); }, {"multiple of 4"});
-    expect_invalid([&] { write_mesh(file(name), m.xyz, m.tets, {}, std::vector<double>{1}); }, {"1 weights for 5 points"});
+    expect_error<InvalidInput>([&] { write_mesh(file(name), m.xyz, bad_tets); }, {"tetrahedron 0", "vertex id 5"});
+    expect_error<InvalidInput>([&] { write_mesh(file(name), nan_xyz, m.tets); }, {"point 2", "non-finite"});
+    expect_error<InvalidInput>([&] { write_mesh(file(name), m.xyz, m.tets, bad_neigh); }, {"neighbour 2"});
+    expect_error<InvalidInput>(
+        [&] {
+          write_mesh(file(name), m.xyz, m.tets, std::vector<tid_t>{-1, -1, -1, -1});
+        },
+        {"1 neighbour rows for 2 tetrahedra"});
+    expect_error<InvalidInput>([&] { write_mesh(file(name), m.xyz, std::vector<vid_t>{0, 1, 2}); }, {"multiple of 4"});
+    expect_error<InvalidInput>([&] { write_mesh(file(name), m.xyz, m.tets, {}, std::vector<double>{1}); },
+                               {"1 weights for 5 points"});
   }
   EXPECT_TRUE(listing().empty()) << listing().front();
 }
@@ -739,8 +740,9 @@ TEST_F(FormatTest, MeshFormatDispatchAndOutputs) {
   EXPECT_EQ(mesh_format("a.VTU"), MeshFormat::Vtu);
   EXPECT_EQ(mesh_format("a.mesh"), MeshFormat::Medit);
   EXPECT_EQ(mesh_format("a.npz"), MeshFormat::Npz);
-  expect_invalid([] { mesh_format("a.vtk"); }, {"a.vtk", "unknown mesh file extension '.vtk'", ".vtu", ".npz"});
-  expect_invalid([] { mesh_format("a.tar.gz"); }, {"'.gz'"});
+  expect_error<InvalidInput>([] { mesh_format("a.vtk"); },
+                             {"a.vtk", "unknown mesh file extension '.vtk'", ".vtu", ".npz"});
+  expect_error<InvalidInput>([] { mesh_format("a.tar.gz"); }, {"'.gz'"});
   EXPECT_EQ(mesh_outputs("d/m.ele", true), (std::vector<fs::path>{"d/m.node", "d/m.ele", "d/m.neigh"}));
   EXPECT_EQ(mesh_outputs("d/m", false), (std::vector<fs::path>{"d/m.node", "d/m.ele"}));
   EXPECT_EQ(mesh_outputs("m.vtu", true), (std::vector<fs::path>{"m.vtu"}));
@@ -764,7 +766,7 @@ TEST_F(FormatTest, TetgenSetRefusesADirectoryInTheWayAndKeepsOldFiles) {
   EXPECT_EQ(listing(), (std::vector<std::string>{"s.ele", "s.neigh", "s.node"}));
   // Single-file formats: an existing file is replaced only by a complete new one.
   bytes_file("k.vtu", "old vtu");
-  expect_invalid([&] { write_vtu(file("k.vtu"), m.xyz, std::vector<vid_t>{0, 1, 2, -1}); }, {"k.vtu"});
+  expect_error<InvalidInput>([&] { write_vtu(file("k.vtu"), m.xyz, std::vector<vid_t>{0, 1, 2, -1}); }, {"k.vtu"});
   EXPECT_EQ(slurp(file("k.vtu")), "old vtu");
   write_vtu(file("k.vtu"), m.xyz, m.tets);
   EXPECT_NE(slurp(file("k.vtu")), "old vtu");

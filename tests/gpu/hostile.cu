@@ -1,3 +1,4 @@
+#include "common/expect_error.hpp"
 #include "common/hostile_cases.hpp"
 #include "gdel/regular.hpp"
 TEST(HostileGpu, PeersReportedFailures) { gdel::test::hostile_cases(gdel::Backend::Cuda); }
@@ -35,12 +36,9 @@ TEST(HostileGpu, OutOfDeviceMemoryIsCleanAndRecoverable) {
   o.backend = gdel::Backend::Cuda;
   o.canonical_order = true;
   o.device_memory_limit = std::size_t(4) << 20;  // 4 MiB: far too little
-  try {
-    gdel::delaunay(pts, o);
-    ADD_FAILURE() << "expected OutOfDeviceMemory";
-  } catch (const gdel::OutOfDeviceMemory& e) {
-    EXPECT_GT(e.needed, 0u);
-    EXPECT_NE(std::string(e.what()).find("device_memory_limit"), std::string::npos) << e.what();
+  if (auto e = gdel::test::expect_error<gdel::OutOfDeviceMemory>([&] { (void)gdel::delaunay(pts, o); },
+                                                                 {"device_memory_limit"})) {
+    EXPECT_GT(e->needed, 0u);
   }
   EXPECT_THROW(gdel::regular(pts, w, o), gdel::OutOfDeviceMemory);
   o.device_memory_limit = 0;
@@ -67,12 +65,9 @@ TEST(HostileGpu, MemoryEstimateIsCheckedBeforeStarting) {
     o.algorithm = a;
     const std::size_t est = gdel::estimated_device_bytes(n, a);
     o.device_memory_limit = est - 1;
-    try {
-      gdel::delaunay(pts, o);
-      ADD_FAILURE() << "expected OutOfDeviceMemory from the estimate";
-    } catch (const gdel::OutOfDeviceMemory& e) {
-      EXPECT_EQ(e.needed, est);
-      EXPECT_NE(std::string(e.what()).find("estimated"), std::string::npos) << e.what();
+    if (auto e = gdel::test::expect_error<gdel::OutOfDeviceMemory>([&] { (void)gdel::delaunay(pts, o); }, {"estimated"},
+                                                                   "a limit one byte under the estimate")) {
+      EXPECT_EQ(e->needed, est);
     }
     o.device_memory_limit = 0;
     const auto t = gdel::delaunay(pts, o);
