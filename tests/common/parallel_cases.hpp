@@ -13,6 +13,7 @@
 
 #include "parallel/atomic.hpp"
 #include "parallel/primitives.hpp"
+#include "parallel/team.hpp"
 #include "sort/point_sort.hpp"
 
 namespace gdel::test {
@@ -21,6 +22,67 @@ template <class B>
 struct IsOdd {
   GDEL_HD bool operator()(std::int64_t x) const { return (x & 1) != 0; }
 };
+
+// par::team_run: a team's sums, selection and barrier (gFlip3D's small flip iterations
+// rely on them) against the host, over sizes around the team's width (one and several
+// chunks of 1 024 on the GPU).
+template <class B>
+void team_cases(par::Context<B>& ctx) {
+  using namespace gdel::par;
+  std::mt19937_64 rng(7);
+  for (std::int64_t n : {0, 1, 1023, 1024, 1025, 5000}) {
+    SCOPED_TRACE(n);
+    std::vector<std::int64_t> h(static_cast<std::size_t>(n));
+    for (auto& x : h) x = static_cast<std::int64_t>(rng() % 1000);
+    Buffer<std::int64_t, B> a(ctx);
+    a.assign(h);
+    const std::size_t sz = static_cast<std::size_t>(n) + 1;
+    Buffer<std::int64_t, B> scan(ctx, sz), mirror(ctx, sz), out(ctx, 2);
+    Buffer<std::int32_t, B> idx(ctx, sz);
+    const std::int64_t* ap = a.data();
+    std::int64_t* sp = scan.data();
+    std::int64_t* mp = mirror.data();
+    std::int64_t* op = out.data();
+    std::int32_t* ip = idx.data();
+    auto third = [=] GDEL_LAMBDA(std::int64_t i) { return ap[i] % 3 == 0; };
+    team_run(ctx, [=] GDEL_LAMBDA(const Team& tm) {
+      // a whole exclusive scan, chunk by chunk
+      std::int64_t base = 0;
+      for (std::int64_t i0 = 0; i0 < n; i0 += tm.size()) {
+        const std::int64_t i = i0 + tm.rank();
+        std::int64_t total = 0;
+        const std::int64_t at = tm.exclusive_sum(i < n ? ap[i] : 0, &total);
+        if (i < n) sp[i] = base + at;
+        base += total;
+      }
+      tm.sync();
+      // each thread reads what others wrote before the barrier
+      for (std::int64_t i = tm.rank(); i < n; i += tm.size()) mp[i] = sp[n - 1 - i];
+      const std::int64_t k = team_select(tm, n, ip, third);
+      if (tm.rank() == 0) {
+        op[0] = base;
+        op[1] = k;
+      }
+    });
+    std::vector<std::int64_t> ref(h.size());
+    std::exclusive_scan(h.begin(), h.end(), ref.begin(), std::int64_t(0));
+    std::vector<std::int32_t> ridx;
+    for (std::int64_t i = 0; i < n; ++i)
+      if (h[static_cast<std::size_t>(i)] % 3 == 0) ridx.push_back(static_cast<std::int32_t>(i));
+    const auto o = out.to_host();
+    EXPECT_EQ(o[0], std::accumulate(h.begin(), h.end(), std::int64_t(0)));
+    ASSERT_EQ(o[1], static_cast<std::int64_t>(ridx.size()));
+    auto sh = scan.to_host(), mh = mirror.to_host();
+    auto ih = idx.to_host();
+    sh.resize(h.size());
+    mh.resize(h.size());
+    ih.resize(ridx.size());
+    EXPECT_EQ(sh, ref);
+    std::reverse(ref.begin(), ref.end());
+    EXPECT_EQ(mh, ref);
+    EXPECT_EQ(ih, ridx);
+  }
+}
 
 template <class B>
 void parallel_layer_cases(par::Context<B>& ctx) {

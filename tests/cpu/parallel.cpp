@@ -10,6 +10,10 @@ TEST(ParallelCpu, Primitives) {
   gdel::par::Context<gdel::par::Cpu> ctx;
   gdel::test::parallel_layer_cases(ctx);
 }
+TEST(ParallelCpu, Team) {
+  gdel::par::Context<gdel::par::Cpu> ctx;
+  gdel::test::team_cases(ctx);
+}
 TEST(ParallelCpu, Buffers) {
   gdel::par::Context<gdel::par::Cpu> ctx;
   gdel::test::buffer_cases(ctx);

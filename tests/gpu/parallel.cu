@@ -4,6 +4,10 @@ TEST(ParallelGpu, Primitives) {
   gdel::par::Context<gdel::par::Cuda> ctx;
   gdel::test::parallel_layer_cases(ctx);
 }
+TEST(ParallelGpu, Team) {
+  gdel::par::Context<gdel::par::Cuda> ctx;
+  gdel::test::team_cases(ctx);
+}
 TEST(ParallelGpu, Buffers) {
   gdel::par::Context<gdel::par::Cuda> ctx;
   gdel::test::buffer_cases(ctx);
