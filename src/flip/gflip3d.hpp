@@ -1163,6 +1163,9 @@ class GFlip3D {
     }
     st_.flips23 += n23;
     st_.flips32 += nfl - n23;
+    // 3-2 flips free their third slot onto the free stack, in flip order (deterministic);
+    // its room is made before the claim, whose slot source reads the stack
+    mesh_.reserve_free(nfl - n23);
     const mesh::SlotSource src = claim(n23);
     m = mesh_.view();
     par::mark(ctx_, "flip: claim slots");
@@ -1187,25 +1190,19 @@ class GFlip3D {
     Buffer<std::uint16_t, B> ext_code(ctx_, static_cast<std::size_t>(6 * nfl));
     Buffer<tid_t, B> ext_tet(ctx_, static_cast<std::size_t>(6 * nfl));
     const ExtFaces ext{ext_code.data(), ext_tet.data()};
-    Buffer<std::int8_t, B> und2(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(nfl, 1)));
     // The flips, each in one thread (ExecuteFlip): its record (a 3-2 flip's vertex order
-    // may need an exact orientation: split fast/exact), its slots and its new tets, each
+    // may need an exact orientation: fast, then exact), its slots and its new tets, each
     // written whole, its external faces first to the old tet's neighbour there; the
-    // adjacency pass below corrects those whose neighbour another flip of this iteration
-    // took, and links the others back.
+    // adjacency step (link) corrects those whose neighbour another flip of this
+    // iteration took, and links the others back.
     const ExecuteFlip xf{m, g, A, flp, pp, rec, src, o23, mark, stamp, ext};
     auto xfast = [=] GDEL_LAMBDA(std::int64_t f) { return xf.template run<false>(f, nullptr); };
     auto xexact = [=] GDEL_LAMBDA(std::int64_t f, double* work) { return xf.template run<true>(f, work); };
-    st_.exact_evaluations += fast_then_exact(ctx_, g, nfl, und2.data(), xfast, xexact, exact_tally(), scratch_threads());
-    par::mark(ctx_, "flip: records + write tets");
-    prop.release();  // (the codes and the accepted list are the records' now)
-    fl.release();
-    und2.release();
     // adjacency across external faces: a neighbour that no flip took links back to the
     // new facet; one that flip h took is replaced by h's new facet there
     const std::uint16_t* ec = ext_code.data();
     const tid_t* et = ext_tet.data();
-    par::parallel_for(ctx_, 6 * nfl, [=] GDEL_LAMBDA(std::int64_t e) {
+    auto link = [=] GDEL_LAMBDA(std::int64_t e) {
       const tid_t u = et[e];
       if (u < 0) return;  // the hull: the new tet already says so
       const std::uint16_t c = ec[e];
@@ -1222,35 +1219,67 @@ class GFlip3D {
         m.set_opp(4 * std::int64_t(u) + j, pack_facet(mine, ext_new_face(c)));
         m.set_face_flags(u, j, 0);
       }
-    });
-    par::mark(ctx_, "flip: adjacency");
-    ext_code.release();  // not needed past here: room for the next active set's sort
-    ext_tet.release();
-    // 3-2 flips free their third slot, in flip order (deterministic free stack)
-    if (nfl > n23) {
-      Buffer<tid_t, B> freed(ctx_, static_cast<std::size_t>(nfl - n23));
-      tid_t* fr = freed.data();
-      par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
-        if (rec[f].type == 2) fr[f - o23[f]] = rec[f].in[2];
-      });
-      mesh_.release(fr, nfl - n23);
-    }
-    off23.release();
+    };
+    // a 3-2 flip's third slot: dead, and on the free stack (TetMesh::reserve_free)
+    tid_t* ftop = mesh_.free_top();
+    auto free_third = [=] GDEL_LAMBDA(std::int64_t f) {
+      if (rec[f].type != 2) return;
+      const tid_t t = rec[f].in[2];
+      m.state[t] = 0;
+      ftop[f - o23[f]] = t;
+    };
     // next active set: the rejected proposers (the stuck tets among them) that no flip
     // took, and the flips' new tets, in slot order. Each is marked (kQueued) by exactly
-    // one thread: a proposer whose tet a flip took (stamped above) is left to that flip,
-    // or was freed. The marked slots are then gathered in order by one pass over the
-    // slots (no sort, no unique: one wait instead of two) and unmarked.
-    const std::size_t slots = static_cast<std::size_t>(mesh_.size());
-    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t j) {
+    // one thread: a proposer whose tet a flip took (stamped by ExecuteFlip) is left to
+    // that flip, or was freed. The marked slots are then gathered in order by one pass
+    // over the slots (no sort, no unique: one wait instead of two) and unmarked.
+    auto queue_rejected = [=] GDEL_LAMBDA(std::int64_t j) {
       if (ap[j]) return;
       const tid_t t = A[plp[j]];
       if ((mark[t] & ~std::uint64_t(0xffffffff)) != stamp) m.state[t] |= mesh::kQueued;
-    });
-    par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) {
+    };
+    auto queue_new = [=] GDEL_LAMBDA(std::int64_t f) {
       for (int a = 0; a < 3; ++a)
         if (rec[f].out[a] >= 0) m.state[rec[f].out[a]] |= mesh::kQueued;
-    });
+    };
+    if (na <= team_max_) {
+      // the steps below in one team, as the proposals and votes were
+      double* work = team_work(g);
+      std::int64_t* tally = cn + 3;
+      par::team_run(ctx_, [=] GDEL_LAMBDA(const par::Team& tm) {
+        double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
+        std::int64_t nex = 0;
+        for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) {
+          if (xfast(f)) continue;
+          ++nex;
+          if (!xexact(f, nullptr)) xexact(f, w);
+        }
+        if (nex) par::atomic_add(tally, nex);
+        tm.sync();
+        for (std::int64_t e = tm.rank(); e < 6 * nfl; e += tm.size()) link(e);
+        for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) free_third(f);
+        for (std::int64_t j = tm.rank(); j < np; j += tm.size()) queue_rejected(j);
+        for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) queue_new(f);
+      });
+      par::mark(ctx_, "flip: records + tets + adjacency (team)");
+    } else {
+      Buffer<std::int8_t, B> und2(ctx_, static_cast<std::size_t>(std::max<std::int64_t>(nfl, 1)));
+      st_.exact_evaluations += fast_then_exact(ctx_, g, nfl, und2.data(), xfast, xexact, exact_tally(), scratch_threads());
+      par::mark(ctx_, "flip: records + write tets");
+      prop.release();  // (the codes and the accepted list are the records' now)
+      fl.release();
+      und2.release();
+      par::parallel_for(ctx_, 6 * nfl, link);
+      par::mark(ctx_, "flip: adjacency");
+      ext_code.release();  // not needed past here: room for the next active set's sort
+      ext_tet.release();
+      par::parallel_for(ctx_, nfl, free_third);
+      par::parallel_for(ctx_, np, queue_rejected);
+      par::parallel_for(ctx_, nfl, queue_new);
+    }
+    mesh_.pushed_free(nfl - n23);
+    off23.release();
+    const std::size_t slots = static_cast<std::size_t>(mesh_.size());
     // With `defer` its length stays on the backend (counts_[4]): the next iteration runs
     // over the bound, np + 3 nfl, without a wait here (bench/RESULTS.md, session 20).
     const std::int64_t abound = np + 3 * nfl;

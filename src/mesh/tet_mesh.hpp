@@ -185,6 +185,16 @@ class TetMesh {
     free_count_ += k;
   }
 
+  // release() in parts, for a caller whose own kernel marks the slots dead and writes
+  // them on the stack: reserve_free(k) makes room for k more entries (before a claim():
+  // growing the stack moves it, and a claim's SlotSource reads it), free_top() is where
+  // the next entry goes, pushed_free(k) counts k entries written there.
+  void reserve_free(std::int64_t k) {
+    if (free_.size() < static_cast<std::size_t>(free_count_ + k)) free_.resize(static_cast<std::size_t>(free_count_ + k));
+  }
+  tid_t* free_top() { return free_.data() + free_count_; }
+  void pushed_free(std::int64_t k) { free_count_ += k; }
+
   // Makes this mesh a copy of o (same context): slots [0, o.size()), the free stack and
   // the high-water mark; this mesh's slots past o.size() become dead. Used to keep a
   // state to return to; copies only the used part, so a copy costs what the mesh holds.
