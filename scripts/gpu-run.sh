@@ -862,7 +862,7 @@ case "$plan" in
     step mesh 60 "$tbin/gpu_mesh"
     GDEL_TET_REORDER=0 step gflip3d_off 150 "$tbin/gpu_gflip3d"
     ;;
-  s25c|s27c)  # session 25 (and 27), the other GPU tests (their own folder: the carry limit is 64 MiB)
+  s25c|s27c|s28c)  # session 25 (and 27, 28), the other GPU tests (their own folder: the carry limit is 64 MiB)
     step grid 120 "$tbin/gpu_grid"
     GDEL_MODELS_DIR="$PWD/.deps/models" step models 120 "$tbin/gpu_models"  # carry .deps/models
     step hostile 200 "$tbin/gpu_hostile"
@@ -929,13 +929,14 @@ case "$plan" in
     GDEL_FLIP_TRACE=1 bench s27f_trace 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     grep -h "gflip3d round" /tmp/gpu-run-s27f_trace.log | tee -a "$out/summary.txt"
     ;;
-  s28a)  # session 28: the small flip iterations in one team (GDEL_TEAM_MAX, default 2048); the GPU
+  s28a)  # session 28: the small flip iterations in two teams (GDEL_TEAM_MAX, default 2048); the GPU
           # tests under the default, with the team on every set (multi-chunk team sums) and never
     step gflip3d 150 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
     step mesh 60 "$tbin/gpu_mesh"
     GDEL_TEAM_MAX=100000000 step gflip3d_all 150 "$tbin/gpu_gflip3d"
     GDEL_TEAM_MAX=0 step gflip3d_none 150 "$tbin/gpu_gflip3d"
+    step parallel 60 "$tbin/gpu_parallel"
     ;;
   s28b)  # session 28, benchmarks: the team (default 2048, and 1024) against none (GDEL_TEAM_MAX=0),
           # alternating, two rounds, at 10^6 on uniform, grid, sphere; uniform 10^7; 10^8 once (peak)

@@ -7,10 +7,12 @@
 #define GDEL_HD __host__ __device__
 #define GDEL_DEVICE __device__
 #define GDEL_FORCEINLINE __forceinline__
+#define GDEL_NOINLINE __noinline__
 #else
 #define GDEL_HD
 #define GDEL_DEVICE
 #define GDEL_FORCEINLINE inline __attribute__((always_inline))
+#define GDEL_NOINLINE __attribute__((noinline))
 #endif
 
 // The per-element lambdas handed to the parallel primitives (parallel_for, copy_if,

@@ -569,6 +569,18 @@ struct ExecuteFlip {
   }
 };
 
+// The exact forms of propose_flip and ExecuteFlip out of line, for the one-block teams of
+// small flip iterations (GFlip3D::commit_flips): few of their threads take them, and a
+// copy inlined at each call site multiplied the team kernels' code and ptxas's time on
+// it. work: the thread's scratch, or nullptr where every evaluation runs in the integer
+// stage (Geo::int_all).
+GDEL_NOINLINE GDEL_HD inline int propose_flip_exact(const Geo& g, const MeshView& m, tid_t b, double* work) {
+  return propose_flip<true>(g, m, b, work);
+}
+GDEL_NOINLINE GDEL_HD inline bool execute_flip_exact(const ExecuteFlip& xf, std::int64_t f, double* work) {
+  return xf.run<true>(f, work);
+}
+
 // Which output of flip record r contains q: 0..2, or kUndecidedResult.
 template <bool Exact>
 GDEL_HD int dag_child(const Geo& g, const FlipRec& r, vid_t q, double* work) {

@@ -1015,8 +1015,7 @@ class GFlip3D {
               p = propose_flip<false>(g, m, A[k], nullptr);
               if (p == kUndecidedResult) {
                 ++nex;
-                p = propose_flip<true>(g, m, A[k], nullptr);
-                if (p == kUndecidedResult) p = propose_flip<true>(g, m, A[k], w);
+                p = propose_flip_exact(g, m, A[k], w);
               }
             }
             pp[k] = p;
@@ -1252,7 +1251,7 @@ class GFlip3D {
         for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) {
           if (xfast(f)) continue;
           ++nex;
-          if (!xexact(f, nullptr)) xexact(f, w);
+          execute_flip_exact(xf, f, w);
         }
         if (nex) par::atomic_add(tally, nex);
         tm.sync();
