@@ -935,7 +935,7 @@ class GFlip3D {
     const char* e = std::getenv("GDEL_TEAM_MAX");
     return e ? std::atoll(e) : kTeamMax;
   }
-  static constexpr std::int64_t kTeamMax = 2048;
+  static constexpr std::int64_t kTeamMax = 1024;
   // The team's scratch for exact evaluations (a slice of geom::kPredicateWork doubles per
   // thread); none on input whose evaluations all run in the integer stage.
   double* team_work(const Geo& g) {
