@@ -569,16 +569,25 @@ struct ExecuteFlip {
   }
 };
 
-// The exact forms of propose_flip and ExecuteFlip out of line, for the one-block teams of
-// small flip iterations (GFlip3D::commit_flips): few of their threads take them, and a
-// copy inlined at each call site multiplied the team kernels' code and ptxas's time on
-// it. work: the thread's scratch, or nullptr where every evaluation runs in the integer
+// The exact forms of propose_flip and ExecuteFlip out of line, for the small flip
+// iterations (GFlip3D::commit_flips' teams, GFlip3D::propose_spread), where one thread
+// runs the fast form and then, if it could not decide, the exact one: few threads take
+// the exact form, and one out-of-line copy keeps it out of each kernel's main path.
+// work: the thread's scratch, or nullptr where every evaluation runs in the integer
 // stage (Geo::int_all).
 GDEL_NOINLINE GDEL_HD inline int propose_flip_exact(const Geo& g, const MeshView& m, tid_t b, double* work) {
   return propose_flip<true>(g, m, b, work);
 }
 GDEL_NOINLINE GDEL_HD inline bool execute_flip_exact(const ExecuteFlip& xf, std::int64_t f, double* work) {
   return xf.run<true>(f, work);
+}
+// Tet b's proposal in one thread: the fast form, then the exact one where the fast one
+// could not decide (counted in nex).
+GDEL_HD inline int propose_flip_in_thread(const Geo& g, const MeshView& m, tid_t b, double* work, std::int64_t& nex) {
+  const int p = propose_flip<false>(g, m, b, nullptr);
+  if (p != kUndecidedResult) return p;
+  ++nex;
+  return propose_flip_exact(g, m, b, work);
 }
 
 // Which output of flip record r contains q: 0..2, or kUndecidedResult.

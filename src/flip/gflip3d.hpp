@@ -900,9 +900,11 @@ class GFlip3D {
     const std::int64_t* alen = active_deferred_ ? counts_.data() + 4 : nullptr;
     Buffer<std::int32_t, B> prop(ctx_, static_cast<std::size_t>(na));
     std::int32_t* pp = prop.data();
-    if (na <= team_max_) {  // small: proposed and decided in one team (commit_flips)
+    if (na <= team_max_) {  // small: decided in one team (commit_flips), proposed there or spread
       active_deferred_ = false;
-      return commit_flips(A, na, prop, with_log, defer_active(), true, alen) > 0;
+      const bool spread = spread_propose(g);
+      if (spread) propose_spread(A, na, pp, alen);
+      return commit_flips(A, na, prop, with_log, defer_active(), !spread, alen) > 0;
     }
     team_work_.release();  // (a large iteration: not part of its peak)
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(na));
@@ -936,6 +938,46 @@ class GFlip3D {
     return e ? std::atoll(e) : kTeamMax;
   }
   static constexpr std::int64_t kTeamMax = 1024;
+  // Where a small active set is proposed (GDEL_TEAM_PROPOSE for measurements): "team" in
+  // the team that decides, "spread" in a pass of its own over small blocks
+  // (propose_spread), "auto" (the default) spread on input where ties are expected
+  // (Geo::int_all: lattice points, the sphere), in the team otherwise.
+  enum class ProposeAt { kTeam, kSpread, kAuto };
+  static ProposeAt propose_at_setting() {
+    const char* e = std::getenv("GDEL_TEAM_PROPOSE");
+    const std::string v = e ? e : "";
+    return v == "team" ? ProposeAt::kTeam : v == "spread" ? ProposeAt::kSpread : ProposeAt::kAuto;
+  }
+  bool spread_propose(const Geo& g) const {
+    return propose_at_ == ProposeAt::kSpread || (propose_at_ == ProposeAt::kAuto && g.int_all);
+  }
+  // propose_spread's CUDA blocks (GDEL_SPREAD_BLOCK for measurements): 32 threads, so that
+  // a few hundred tets run on as many SMs as they fill warps.
+  static int spread_block_setting() {
+    const char* e = std::getenv("GDEL_SPREAD_BLOCK");
+    const int v = e ? std::atoi(e) : 0;
+    return v >= 32 && v <= 1024 && v % 32 == 0 ? v : 32;
+  }
+  // A small active set's proposals (as commit_flips' team makes them: one thread per tet,
+  // the fast form, then the exact one) in one launch of small blocks. In the one-block
+  // team every exact tie ran on one SM: on the sphere, whose insphere tests are all ties,
+  // the team that proposed and decided took 118 us against 27 on uniform input
+  // (bench/RESULTS.md, session 28). Positions from *alen on (a deferred set's length)
+  // propose nothing.
+  void propose_spread(const tid_t* A, std::int64_t na, std::int32_t* pp, const std::int64_t* alen) {
+    const MeshView m = mesh_.view();
+    const Geo g = geo();
+    std::int64_t* tally = counts_.data() + 3;
+    par::for_each_with_scratch(
+        ctx_, na, geom::kPredicateWork,
+        [=] GDEL_LAMBDA(std::int64_t k, double* w) {
+          std::int64_t nex = 0;
+          pp[k] = alen && k >= *alen ? -1 : propose_flip_in_thread(g, m, A[k], w, nex);
+          if (nex) par::atomic_add(tally, nex);
+        },
+        /*scratch_free=*/g.int_all, nullptr, -1, spread_block_);
+    par::mark(ctx_, "flip: propose (spread)");
+  }
   // The team's scratch for exact evaluations (a slice of geom::kPredicateWork doubles per
   // thread); none on input whose evaluations all run in the integer stage.
   double* team_work(const Geo& g) {
@@ -999,6 +1041,26 @@ class GFlip3D {
     // (int32: at most np < 2^31 flips)
     Buffer<std::int32_t, B> off23(ctx_, static_cast<std::size_t>(npb + 1));
     std::int32_t* o23 = off23.data();
+    // vote: the smallest proposer index wins each tet, by an atomic max in aux_key_ of
+    // vote_stamp() | INT_MAX - index; accepted flips are disjoint. The stamp (this
+    // iteration's, above every earlier vote and flip stamp) spares a pass that would
+    // reset the votes. j: a position in the proposer list.
+    auto cast_vote = [=] GDEL_LAMBDA(std::int64_t j) {
+      const std::int64_t k = plp[j];
+      if (pp[k] < 0) return;  // stuck
+      tid_t ts[3];
+      const int nt = prop_tets(m, A[k], pp[k], ts);
+      for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+    };
+    // after the votes: whether proposer j won every tet of its flip (a stuck tet: never)
+    auto accepted = [=] GDEL_LAMBDA(std::int64_t j) {
+      const std::int64_t k = plp[j];
+      tid_t ts[3];
+      const int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
+      bool ok = nt > 0;
+      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == (vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+      return ok;
+    };
     if (na <= team_max_) {
       // One team does what the steps below do, with the same results: the lists come
       // out of sums in index order. A small iteration's fifteen-odd launches were most of
@@ -1009,29 +1071,13 @@ class GFlip3D {
           double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
           const std::int64_t live = alen && *alen < na ? *alen : na;
           std::int64_t nex = 0;
-          for (std::int64_t k = tm.rank(); k < na; k += tm.size()) {
-            int p = -1;
-            if (k < live) {
-              p = propose_flip<false>(g, m, A[k], nullptr);
-              if (p == kUndecidedResult) {
-                ++nex;
-                p = propose_flip_exact(g, m, A[k], w);
-              }
-            }
-            pp[k] = p;
-          }
+          for (std::int64_t k = tm.rank(); k < na; k += tm.size())
+            pp[k] = k < live ? propose_flip_in_thread(g, m, A[k], w, nex) : -1;
           if (nex) par::atomic_add(cn + 3, nex);
           tm.sync();
         }
         const std::int64_t np = par::team_select(tm, na, plp, is_proposer);
-        for (std::int64_t j = tm.rank(); j < np; j += tm.size()) {
-          const std::int64_t k = plp[j];
-          if (pp[k] < 0) continue;  // stuck
-          tid_t ts[3];
-          const int nt = prop_tets(m, A[k], pp[k], ts);
-          for (int l = 0; l < nt; ++l)
-            par::atomic_max(vote + ts[l], vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
-        }
+        for (std::int64_t j = tm.rank(); j < np; j += tm.size()) cast_vote(j);
         tm.sync();
         // accepted flips and the 2-3 flips among them, counted by one sum (high and low
         // words: both below 2^31)
@@ -1041,13 +1087,9 @@ class GFlip3D {
           bool ok = false;
           bool is23 = false;
           if (j < np) {
-            const std::int64_t k = plp[j];
-            tid_t ts[3];
-            const int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
-            ok = nt > 0;
-            for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == (vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+            ok = accepted(j);
             ap[j] = ok ? 1 : 0;
-            is23 = ok && prop_type(pp[k]) == 1;
+            is23 = ok && prop_type(pp[plp[j]]) == 1;
           }
           std::int64_t total = 0;
           const std::int64_t at =
@@ -1070,25 +1112,8 @@ class GFlip3D {
     } else {
       par::select_indices_to(ctx_, static_cast<std::size_t>(na), plp, cn, is_proposer);
       par::mark(ctx_, "flip: select proposers");
-      // vote: the smallest proposer index wins each tet, by an atomic max in aux_key_ of
-      // vote_stamp() | INT_MAX - index; accepted flips are disjoint. The stamp (this
-      // iteration's, above every earlier vote and flip stamp) spares a pass that would
-      // reset the votes.
-      par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
-        const std::int64_t k = plp[j];
-        if (pp[k] < 0) return;  // stuck
-        tid_t ts[3];
-        int nt = prop_tets(m, A[k], pp[k], ts);
-        for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
-      });
-      par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) {
-        const std::int64_t k = plp[j];
-        tid_t ts[3];
-        int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
-        bool ok = nt > 0;
-        for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == (vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
-        ap[j] = ok ? 1 : 0;
-      });
+      par::parallel_for_counted(ctx_, npb, cn, cast_vote);
+      par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) { ap[j] = accepted(j) ? 1 : 0; });
       par::select_indices_to(ctx_, static_cast<std::size_t>(npb), flp, cn + 1,
                              [=] GDEL_LAMBDA(std::int64_t j) { return j < cn[0] && ap[j] != 0; });
       par::parallel_for(ctx_, npb + 1, [=] GDEL_LAMBDA(std::int64_t f) {
@@ -1633,6 +1658,8 @@ class GFlip3D {
   Buffer<tid_t, B> carry_;  // between rounds: the tets the last flip loop left stuck
   Buffer<double, B> team_work_;  // team_work(): the small flip iterations' exact scratch
   std::int64_t team_max_ = team_max_setting();
+  ProposeAt propose_at_ = propose_at_setting();
+  int spread_block_ = spread_block_setting();
   Buffer<std::uint64_t, B> aux_key_;  // per tet slot; see grow_aux for the three
   Buffer<std::int32_t, B> aux_pick_;
   bool marks_dirty_ = false;  // aux_key_ holds flip stamps

@@ -38,10 +38,12 @@ inline constexpr std::int64_t kUncountedListMax = std::int64_t(1) << 22;
 // work = nullptr instead (no scratch allocated). With `count` (backend memory, set by an
 // earlier call on the stream) only k < min(n, *count): n is then a bound. max_threads > 0
 // caps the threads (and so the scratch) on the CUDA backend, where they stride over the
-// items; the CPU backend's team is the cap there.
+// items; the CPU backend's team is the cap there. block: the CUDA blocks' threads (a few
+// hundred costly items spread over more SMs in smaller blocks); not used on the CPU.
 template <class F>
 void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false,
-                           const std::int64_t* count = nullptr, std::int64_t /*max_threads*/ = -1) {
+                           const std::int64_t* count = nullptr, std::int64_t /*max_threads*/ = -1,
+                           int /*block*/ = 64) {
   if (count && *count < n) n = *count;
   if (n <= 0) return;
 #pragma omp parallel if (n >= 64)  // exact items are costly: a team pays off early
@@ -87,9 +89,8 @@ inline std::int64_t exact_threads(const Context<Cuda>& c, std::int64_t n, bool s
 
 template <class F>
 void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false,
-                           const std::int64_t* count = nullptr, std::int64_t max_threads = -1) {
+                           const std::int64_t* count = nullptr, std::int64_t max_threads = -1, int block = 64) {
   if (n <= 0) return;
-  const int block = 64;
   std::int64_t want = exact_threads(c, n, scratch_free);
   if (max_threads > 0 && max_threads < want) want = max_threads;
   std::int64_t threads = (want + block - 1) / block * block;
