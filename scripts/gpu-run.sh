@@ -949,6 +949,34 @@ case "$plan" in
     bench s28b_def7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     bench s28b_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s29a)  # session 29: small iterations' proposals spread over small blocks (GDEL_TEAM_PROPOSE:
+          # auto = spread on integer input, the default; spread; team); the GPU tests under each,
+          # and with the teams on every set (spread then covers large sets and float input's scratch)
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    GDEL_TEAM_PROPOSE=spread step gflip3d_spread 150 "$tbin/gpu_gflip3d"
+    GDEL_TEAM_PROPOSE=team step gflip3d_team 150 "$tbin/gpu_gflip3d"
+    GDEL_TEAM_PROPOSE=spread GDEL_TEAM_MAX=100000000 step gflip3d_spread_all 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step mesh 60 "$tbin/gpu_mesh"
+    step parallel 60 "$tbin/gpu_parallel"
+    ;;
+  s29b)  # session 29, benchmarks: auto (the default) against team and spread, alternating, two
+          # rounds, at 10^6 on uniform, grid, sphere
+    for r in 1 2; do
+      GDEL_TEAM_PROPOSE=team bench "s29b_team_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s29b_auto_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_TEAM_PROPOSE=spread bench "s29b_spread_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    ;;
+  s29c)  # session 29, benchmarks: the spread's block size (32 default, 64, 128) on grid and sphere;
+          # the other generators at 10^6; uniform 10^7; a step profile of sphere and grid
+    GDEL_SPREAD_BLOCK=64 bench s29c_b64 90 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_SPREAD_BLOCK=128 bench s29c_b128 90 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s29c_b32 90 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s29c_others 90 --dist uniform,gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s29c_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s29c_prof 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
           # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
     for r in 1 2; do
