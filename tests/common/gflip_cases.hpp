@@ -223,6 +223,45 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
   });
 }
 
+// A small flip iteration (at most GDEL_TEAM_MAX active tets) runs in two teams, its
+// proposals made in the first team or spread over the device beforehand
+// (GDEL_TEAM_PROPOSE); a large one runs device-wide steps. Every path lists its
+// proposers, flips and next active set in index order, so each gives the default's
+// triangulation, flip for flip: no teams, teams proposing, spread proposals, and teams
+// on every active set with spread proposals (which then cover large sets, and float
+// input's exact scratch). Sphere points: every insphere test an exact tie.
+inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
+  struct Path {
+    const char* team_max;
+    const char* propose;
+  };
+  const Path paths[] = {{"0", "auto"}, {"1024", "team"}, {"1024", "spread"}, {"100000000", "spread"}};
+  auto check = [&](const std::vector<double>& pts, const Options& o) {
+    const Triangulation base = delaunay(pts, o);
+    expect_flip_output_valid(pts, base, b);
+    for (const Path& p : paths) {
+      SCOPED_TRACE(std::string("GDEL_TEAM_MAX=") + p.team_max + " GDEL_TEAM_PROPOSE=" + p.propose);
+      ::setenv("GDEL_TEAM_MAX", p.team_max, 1);
+      ::setenv("GDEL_TEAM_PROPOSE", p.propose, 1);
+      const Triangulation t = delaunay(pts, o);
+      ::unsetenv("GDEL_TEAM_MAX");
+      ::unsetenv("GDEL_TEAM_PROPOSE");
+      EXPECT_EQ(t.stats.flip_iterations, base.stats.flip_iterations);
+      EXPECT_EQ(t.stats.flips23, base.stats.flips23);
+      EXPECT_EQ(t.stats.flips32, base.stats.flips32);
+      EXPECT_EQ(t.tets, base.tets);
+      EXPECT_EQ(t.neighbors, base.neighbors);
+    }
+  };
+  for_flip_study_inputs(b, n, 11, check);
+  SCOPED_TRACE("sphere");
+  Options o;
+  o.backend = b;
+  o.algorithm = Algorithm::gflip3d;
+  o.cpu_rounds = true;
+  check(gen::generate(gen::Distribution::Sphere, n / 4, 11), o);
+}
+
 // At most FlipConfig::max_flips_per_iteration flips run per iteration (memory bound at
 // 10^8 points); the accepted flips past it stand down and propose again. With a small cap
 // (GDEL_FLIPS_PER_ITERATION) the cap binds in most iterations: gFlip3D's output must
