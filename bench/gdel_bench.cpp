@@ -1,19 +1,7 @@
 // gdel-bench: times gdel's algorithms and the peers available in this build (CGAL
 // sequential and parallel) in one process, on the same points, checks every gdel
-// output with the exact verifier, prints a table and writes JSON.
-//
-//   gdel-bench [--dist uniform,gaussian,...] [--n 100000,1000000] [--methods LIST]
-//              [--repeat 3] [--cpu-max N] [--json FILE] [--no-verify] [--seed 20261122]
-//   --dist also takes point files (a name with a '.': .off .ply .xyz .node); n is then ignored.
-//   methods: auto-cuda, auto-cpu (Algorithm::Auto), gdel3d-cuda, gdel3d-cuda-dev (points and results in device memory: delaunay_device), gdel3d-cpu, gstar4d-cuda, gstar4d-cpu (failed column = certificate fallbacks), gflip3d-cuda, gflip3d-terminal-cuda, gflip3d-cpu, gflip3d-terminal-cpu,
-//            (gflip3d-* and gdel3d-* with "-grid-" in the name, e.g. gdel3d-grid-cuda: Options::initial = grid;
-//             with "nonopt", e.g. gflip3d-nonopt-cpu: Options::nonoptimal_flips;
-//             with "-indsplit", e.g. gflip3d-indsplit-cuda: Options::independent_splits;
-//             with "-random" or "-centroid", e.g. gflip3d-random-cpu: Options::insertion)
-//            cgal, cgal-par   (default: all available)
-//   weighted points (regular triangulation): greg3d-cuda, greg3d-cpu, cgal-regular, cgal-regular-par,
-//            with weights scale * h^2 * U(0,1), h the mean spacing of the points' bounding box
-//            (--weight-scale, default 3: about half the points redundant on uniform input).
+// output with the exact verifier, prints a table and writes JSON. Its options: kUsage
+// below (`gdel-bench --help`).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -34,6 +22,44 @@
 #include "peers.hpp"
 
 namespace {
+
+constexpr const char* kUsage = R"(Usage: gdel-bench [OPTIONS]
+
+Times gdel's algorithms and the peers in this build on the same points, in one process;
+verifies every gdel result exactly; prints a table and writes JSON.
+
+Options:
+  -h, --help          print this text and exit
+  --dist LIST         distributions, comma-separated (default: uniform,gaussian,
+                      thin_shell,grid,sphere,ball); a name with a '.' is a point file
+                      (.off .ply .xyz .node), and --n is then ignored for it
+  --n LIST            sizes, comma-separated (default: 100000,1000000)
+  --methods LIST      what to run, comma-separated (default: gflip3d-cuda and
+                      gflip3d-terminal-cuda where a GPU is present, gflip3d-cpu, and
+                      cgal and cgal-par where built with CGAL)
+  --repeat N          timed runs per row; the median is reported (default: 3)
+  --cpu-max N         skip gdel's CPU methods above N points (default: 1000000)
+  --json FILE         also write the rows as JSON
+  --no-verify         skip the exact verifier
+  --seed N            seed of the generated points (default: 20261122)
+  --weight-scale X    weighted methods: weights X * h^2 * U(0,1), h the mean spacing
+                      of the points' bounding box (default: 3, about half the points
+                      redundant on uniform input)
+
+Methods:
+  auto-cuda, auto-cpu                Algorithm::Auto
+  gdel3d-cuda, gdel3d-cpu            gFlip3D + star splaying (exact Delaunay)
+  gdel3d-cuda-dev                    the same with points and results in device memory
+  gstar4d-cuda, gstar4d-cpu          gStar4D (failed column: certificate fallbacks)
+  gflip3d-cuda, gflip3d-cpu          gFlip3D alone (near-Delaunay)
+  gflip3d-terminal-cuda, -cpu        gFlip3D's insert-all-then-flip variant
+    gflip3d-* and gdel3d-* with "-grid-" (e.g. gdel3d-grid-cuda): Options::initial = grid;
+    with "nonopt" (gflip3d-nonopt-cpu): Options::nonoptimal_flips; with "-indsplit":
+    Options::independent_splits; with "-random" or "-centroid": Options::insertion
+  cgal, cgal-par                     CGAL Delaunay_triangulation_3, sequential / parallel
+  greg3d-cuda, greg3d-cpu            regular triangulation of weighted points
+  cgal-regular, cgal-regular-par     CGAL Regular_triangulation_3
+)";
 
 std::vector<std::string> split(const std::string& s) {
   std::vector<std::string> out;
@@ -90,6 +116,10 @@ int bench_main(int argc, char** argv) {
       }
       return argv[++i];
     };
+    if (a == "-h" || a == "--help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
     if (a == "--dist") dists = split(next());
     else if (a == "--n") {
       sizes.clear();
@@ -108,7 +138,7 @@ int bench_main(int argc, char** argv) {
         throw gdel::InvalidInput("--seed expects a non-negative integer, got '" + t + "'");
     }
     else {
-      std::fprintf(stderr, "gdel-bench: unknown argument %s\n", a.c_str());
+      std::fprintf(stderr, "gdel-bench: unknown argument %s\n\n%s", a.c_str(), kUsage);
       return 1;
     }
   }
