@@ -952,7 +952,8 @@ class GFlip3D {
     return propose_at_ == ProposeAt::kSpread || (propose_at_ == ProposeAt::kAuto && g.int_all);
   }
   // propose_spread's CUDA blocks (GDEL_SPREAD_BLOCK for measurements): 32 threads, so that
-  // a few hundred tets run on as many SMs as they fill warps.
+  // a few hundred tets run on as many SMs as they fill warps (64 and 128 measured no
+  // different on the H200: bench/RESULTS.md, session 29).
   static int spread_block_setting() {
     const char* e = std::getenv("GDEL_SPREAD_BLOCK");
     const int v = e ? std::atoi(e) : 0;
@@ -960,10 +961,10 @@ class GFlip3D {
   }
   // A small active set's proposals (as commit_flips' team makes them: one thread per tet,
   // the fast form, then the exact one) in one launch of small blocks. In the one-block
-  // team every exact tie ran on one SM: on the sphere, whose insphere tests are all ties,
-  // the team that proposed and decided took 118 us against 27 on uniform input
-  // (bench/RESULTS.md, session 28). Positions from *alen on (a deferred set's length)
-  // propose nothing.
+  // team every exact tie runs on one SM (the sphere's insphere tests are all ties). The
+  // gain is small: on the sphere at 10^6 the first team's share fell 44.4 -> 38.8 ms over
+  // its 618 small iterations, on the grid 55.7 -> 50.5 ms (bench/RESULTS.md, session 29).
+  // Positions from *alen on (a deferred set's length) propose nothing.
   void propose_spread(const tid_t* A, std::int64_t na, std::int32_t* pp, const std::int64_t* alen) {
     const MeshView m = mesh_.view();
     const Geo g = geo();
