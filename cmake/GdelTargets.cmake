@@ -11,7 +11,8 @@ function(gdel_configure_target tgt)
   target_include_directories(${tgt} SYSTEM PUBLIC $<BUILD_INTERFACE:${GDEL_CCCL_INCLUDE}> $<BUILD_INTERFACE:${GDEL_CCCL_PARENT}>)
   target_compile_options(${tgt} PRIVATE
     $<$<COMPILE_LANGUAGE:CXX>:${GDEL_HOST_FLAGS} -Wall -Wextra -Wno-unknown-pragmas>
-    $<$<COMPILE_LANGUAGE:CUDA>:--fmad=false --extended-lambda --expt-relaxed-constexpr -Xcompiler=-ffp-contract=off,-fopenmp -Xcudafe=--diag_suppress=esa_on_defaulted_function_ignored>)
+    $<$<COMPILE_LANGUAGE:CUDA>:--fmad=false --extended-lambda --expt-relaxed-constexpr -Xcompiler=-ffp-contract=off,-fopenmp -Xcudafe=--diag_suppress=esa_on_defaulted_function_ignored>
+    $<$<AND:$<COMPILE_LANGUAGE:CUDA>,$<NOT:$<STREQUAL:${GDEL_CUDA_SPLIT_COMPILE},1>>>:--split-compile=${GDEL_CUDA_SPLIT_COMPILE}>)
   target_compile_definitions(${tgt} PRIVATE
     $<$<COMPILE_LANGUAGE:CXX>:THRUST_DEVICE_SYSTEM=THRUST_DEVICE_SYSTEM_OMP>
     $<$<COMPILE_LANGUAGE:CUDA>:GDEL_CUDA_TU=1>)
