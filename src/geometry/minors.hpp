@@ -213,31 +213,104 @@ GDEL_HD bool int_entries(const LiftedRows& R, const int* rows, const int* cols, 
   return true;
 }
 
-// Sign of det[[q_rows[i], 1]] over the columns cols[0..K) into `sign`, when the integer
-// stage applies (see above: integers, else quarters); false otherwise (nothing evaluated).
+// The integer stage's K x K matrix of differences to the last row, D_ij = q_ij - q_Kj (see
+// above: |D_ij| <= 2^24 in a coordinate column, <= 2^49 in the h column, exact in int64),
+// when the entries are integers at scale 1 or at the quarter scale; false otherwise.
 template <int K>
-GDEL_HD bool det_ones_int(const LiftedRows& R, const int* rows, const int* cols, int& sign) {
+GDEL_HD bool int_differences(const LiftedRows& R, const int* rows, const int* cols, std::int64_t (&d)[K][K]) {
   std::int64_t q[K + 1][K];
   if (!int_entries<K>(R, rows, cols, 1.0, q) && !int_entries<K>(R, rows, cols, kIntQuarter, q)) return false;
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) d[i][j] = q[i][j] - q[K][j];
+  return true;
+}
+
+// The exact product of two int64 values (a widening multiply).
+GDEL_HD GDEL_FORCEINLINE i128 mul_wide(std::int64_t a, std::int64_t b) { return i128(a) * i128(b); }
+
+// det D in 128-bit integers throughout: valid for every D of the stage (bound above).
+template <int K>
+GDEL_HD i128 det_int_wide(const std::int64_t (&q)[K][K]) {
   i128 d[K][K];
   for (int i = 0; i < K; ++i)
-    for (int j = 0; j < K; ++j) d[i][j] = i128(q[i][j] - q[K][j]);
-  i128 det;
+    for (int j = 0; j < K; ++j) d[i][j] = i128(q[i][j]);
   if constexpr (K == 1) {
-    det = d[0][0];
+    return d[0][0];
   } else if constexpr (K == 2) {
-    det = d[0][0] * d[1][1] - d[1][0] * d[0][1];
+    return d[0][0] * d[1][1] - d[1][0] * d[0][1];
   } else {
     // 2x2 minors of columns 0, 1 over row pairs (a, b)
     auto m2 = [&](int a, int b) { return d[a][0] * d[b][1] - d[b][0] * d[a][1]; };
     // 3x3 minor of columns 0..2 over rows a < b < c (Laplace along column 2)
     auto m3 = [&](int a, int b, int c) { return d[a][2] * m2(b, c) - d[b][2] * m2(a, c) + d[c][2] * m2(a, b); };
     if constexpr (K == 3) {
-      det = m3(0, 1, 2);
+      return m3(0, 1, 2);
     } else {  // Laplace along column 3
-      det = -d[0][3] * m3(1, 2, 3) + d[1][3] * m3(0, 2, 3) - d[2][3] * m3(0, 1, 3) + d[3][3] * m3(0, 1, 2);
+      return -d[0][3] * m3(1, 2, 3) + d[1][3] * m3(0, 2, 3) - d[2][3] * m3(0, 1, 3) + d[3][3] * m3(0, 1, 2);
     }
   }
+}
+
+// The narrow form: when every entry of the first K - 1 columns of D is at most 2^20 in
+// magnitude, the minors of those columns fit int64, and only the last step (Laplace along
+// the last column, whose entries may be any of the stage's: up to 2^49) needs 128 bits,
+// in K widening products. Bound, with N = 2^20: a 2x2 minor is at most 2 N^2 = 2^41, a 3x3
+// minor of columns 0..2 (all coordinate columns: only the last column can be h) at most
+// 3 N * 2 N^2 = 1.5 * 2^62 < 2^63 - 1, every partial sum of it at most 2^62; the last step
+// sums K <= 4 products of at most 2^49 * 1.5 * 2^62 < 2^113. This is most lattice input
+// (the grid's 512^3 cells, the sphere generator's points up to radius 2^19) at a fraction
+// of the 128-bit form's multiplies. Returns false (nothing evaluated) when it does not
+// apply.
+inline constexpr std::int64_t kIntNarrowMax = std::int64_t(1) << 20;
+template <int K>
+GDEL_HD bool det_int_narrow(const std::int64_t (&d)[K][K], i128& det) {
+  if constexpr (K == 1) {
+    det = d[0][0];
+    return true;
+  } else {
+    bool narrow = true;
+    for (int i = 0; i < K; ++i)
+      for (int j = 0; j + 1 < K; ++j) narrow &= d[i][j] >= -kIntNarrowMax && d[i][j] <= kIntNarrowMax;
+    if (!narrow) return false;
+    constexpr int L = K - 1;  // the last column
+    if constexpr (K == 2) {
+      det = mul_wide(d[0][0], d[1][L]) - mul_wide(d[1][0], d[0][L]);
+    } else {
+      auto m2 = [&](int a, int b) { return d[a][0] * d[b][1] - d[b][0] * d[a][1]; };
+      if constexpr (K == 3) {
+        det = mul_wide(d[0][L], m2(1, 2)) - mul_wide(d[1][L], m2(0, 2)) + mul_wide(d[2][L], m2(0, 1));
+      } else {
+        const std::int64_t m01 = m2(0, 1), m02 = m2(0, 2), m03 = m2(0, 3), m12 = m2(1, 2), m13 = m2(1, 3),
+                           m23 = m2(2, 3);
+        const std::int64_t m123 = d[1][2] * m23 - d[2][2] * m13 + d[3][2] * m12;
+        const std::int64_t m023 = d[0][2] * m23 - d[2][2] * m03 + d[3][2] * m02;
+        const std::int64_t m013 = d[0][2] * m13 - d[1][2] * m03 + d[3][2] * m01;
+        const std::int64_t m012 = d[0][2] * m12 - d[1][2] * m02 + d[2][2] * m01;
+        det = -mul_wide(d[0][L], m123) + mul_wide(d[1][L], m023) - mul_wide(d[2][L], m013) +
+              mul_wide(d[3][L], m012);
+      }
+    }
+    return true;
+  }
+}
+
+// Sign of det[[q_rows[i], 1]] over the columns cols[0..K) into `sign`, when the integer
+// stage applies (see above: integers, else quarters); false otherwise (nothing evaluated).
+// A last column of zeros (the heights of points on one sphere about the origin: every
+// insphere test of the sphere generator) gives 0 at once; then the narrow form where it
+// applies, else the 128-bit one.
+template <int K>
+GDEL_HD bool det_ones_int(const LiftedRows& R, const int* rows, const int* cols, int& sign) {
+  std::int64_t d[K][K];
+  if (!int_differences<K>(R, rows, cols, d)) return false;
+  bool zero_column = true;
+  for (int i = 0; i < K; ++i) zero_column &= d[i][K - 1] == 0;
+  if (zero_column) {
+    sign = 0;
+    return true;
+  }
+  i128 det;
+  if (!det_int_narrow<K>(d, det)) det = det_int_wide<K>(d);
   sign = (det > 0) - (det < 0);
   return true;
 }

@@ -670,6 +670,73 @@ TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
   fail.report("integer stage");
 }
 
+// The narrow form (int64 minors, one 128-bit step) and the 128-bit form of the integer
+// stage, each against GMP, about the narrow form's limit of 2^20 (Generator::int_narrow_limit).
+namespace {
+struct NarrowTally {
+  long narrow = 0, wide_only = 0, zero_column = 0, zeros = 0;
+};
+template <int K>
+void check_int_forms(const gdel::geom::detail::LiftedRows& R, const int* cols, int expect, NarrowTally& n,
+                     Failures& fail, const std::string& what) {
+  namespace d = gdel::geom::detail;
+  const int rows[5] = {0, 1, 2, 3, 4};
+  std::int64_t q[K][K];
+  if (!d::int_differences<K>(R, rows, cols, q)) {
+    fail.add("integer stage refused " + what);
+    return;
+  }
+  const auto sign = [](d::i128 v) { return (v > 0) - (v < 0); };
+  if (sign(d::det_int_wide<K>(q)) != expect) fail.add("128-bit form " + what);
+  d::i128 v = 7;
+  if (d::det_int_narrow<K>(q, v)) {
+    ++n.narrow;
+    if (sign(v) != expect) fail.add("narrow form " + what);
+  } else {
+    ++n.wide_only;
+  }
+  bool zc = true;
+  for (int i = 0; i < K; ++i) zc &= q[i][K - 1] == 0;
+  n.zero_column += zc;
+  int s = 7;
+  if (!d::det_ones_int<K>(R, rows, cols, s) || s != expect) fail.add("det_ones_int " + what);
+}
+}  // namespace
+
+TEST(Predicates, IntegerStageNarrowFormAtItsLimitsMatchesGmp) {
+  Generator g(20261201);
+  Oracle o;
+  Failures fail;
+  NarrowTally n;
+  for (long t = 0; t < 40000; ++t) {
+    const Case k = g.int_narrow_limit();
+    gdel::geom::detail::LiftedRows R{{k.p[0], k.p[1], k.p[2], k.p[3], k.p[4]},
+                                     {k.w[0], k.w[1], k.w[2], k.w[3], k.w[4]}};
+    o.load(k, 5, true);
+    for (unsigned mask = 1; mask < 16; ++mask) {
+      int cols[4];
+      const int kc = gdel::geom::detail::mask_columns(mask, cols);
+      const int x = o.minor(mask);
+      n.zeros += x == 0;
+      const std::string what = "mask " + std::to_string(mask) + " " + describe(k, 5);
+      switch (kc) {
+        case 1: check_int_forms<1>(R, cols, x, n, fail, what); break;
+        case 2: check_int_forms<2>(R, cols, x, n, fail, what); break;
+        case 3: check_int_forms<3>(R, cols, x, n, fail, what); break;
+        default: check_int_forms<4>(R, cols, x, n, fail, what); break;
+      }
+    }
+  }
+  std::printf("[integer stage, narrow limit] narrow form %ld, 128-bit only %ld, zero last column %ld, "
+              "exact zeros %ld\n", n.narrow, n.wide_only, n.zero_column, n.zeros);
+  // both forms and the zero column occur often, so each check above has cases to see
+  EXPECT_GT(n.narrow, 100000);
+  EXPECT_GT(n.wide_only, 100000);
+  EXPECT_GT(n.zero_column, 10000);
+  EXPECT_GT(n.zeros, 10000);
+  fail.report("integer stage narrow form");
+}
+
 TEST(Predicates, SosDeepDegeneracies) {
   Oracle o;
   std::vector<double> work(kPredicateWork);

@@ -449,6 +449,47 @@ class Generator {
   }
   static constexpr int kFamilies = 11;
 
+  // Integer cases about the integer stage's narrow form (minors.hpp, kIntNarrowMax = 2^20):
+  // coordinate differences to the last point of exactly +-2^20 and +-(2^20 - 1), or just
+  // past (2^20 + 1, 2^20 + 2), in sign patterns that make the 3x3 minors large (up to
+  // 4 * 2^60), at offsets that keep every coordinate within 2^23; weights at +-2^46 or 0, so
+  // that the height column reaches the stage's 2^49. One case in four has its points on a
+  // sphere about the origin (coordinate permutations and sign changes of one vector of
+  // about 2^19, unweighted): equal heights, the height column all zero. Not part of
+  // degenerate(): the families' streams stay as they were.
+  Case int_narrow_limit() {
+    Case k;
+    ids(k);
+    const double N = 0x1p20;
+    if (integer(0, 3) == 0) {
+      const double v[3] = {std::floor(N / 2) + integer(-2, 2), static_cast<double>(integer(0, 1 << 19)),
+                           static_cast<double>(integer(0, 3))};
+      for (int i = 0; i < 5; ++i) {
+        int perm[3] = {0, 1, 2};
+        std::shuffle(perm, perm + 3, rng_);
+        for (int c = 0; c < 3; ++c) k.p[i][c] = (rng_() & 1 ? 1.0 : -1.0) * v[perm[c]];
+        k.w[i] = 0.0;
+      }
+      return k;
+    }
+    const double steps[] = {N, N - 1.0, N + 1.0, N + 2.0};
+    const double lim = 0x1p23 - 4.0 * N;
+    double o[3];
+    for (double& x : o) x = std::floor(uniform(-lim, lim));
+    const bool past = integer(0, 2) == 0;  // otherwise every difference within 2^20
+    for (int i = 0; i < 5; ++i) {
+      for (int c = 0; c < 3; ++c) {
+        const double step = steps[past ? integer(0, 3) : integer(0, 1)];
+        const int pick = integer(0, 4);  // -step, 0, +step mostly; a small difference sometimes
+        const double d = pick == 0 ? -step : pick <= 2 ? step : pick == 3 ? 0.0 : static_cast<double>(integer(-3, 3));
+        k.p[i][c] = i == 4 ? o[c] : o[c] + d;
+      }
+      const int wp = integer(0, 3);
+      k.w[i] = wp == 0 ? 0x1p46 : wp == 1 ? -0x1p46 : wp == 2 ? 0.0 : static_cast<double>(integer(-1000, 1000));
+    }
+    return k;
+  }
+
   static double in_range(double x) {
     const double a = std::fabs(x);
     return (a != 0.0 && (a < 0x1p-152 || a > 0x1p200)) ? 0.0 : x;

@@ -107,14 +107,16 @@ TEST(GpuPredicates, MatchGmpAndHost) {
   // >= 10^6 random and >= 10^5 degenerate / near-degenerate cases (issue criterion)
   const int n_random = env ? std::atoi(env) : (1 << 20);
   const int n_degenerate = env ? std::atoi(env) : (1 << 17);
+  const int n_narrow = env ? std::atoi(env) : (1 << 15);  // the integer stage's narrow form at its limit
   std::vector<Case> cases;
-  cases.reserve(n_random + n_degenerate);
+  cases.reserve(n_random + n_degenerate + n_narrow);
   Generator g(20240601);
   for (int i = 0; i < n_random; ++i) {
     const int sel = i % 16;
     cases.push_back(g.random(sel == 0 ? 0x1p198 : sel == 1 ? 0x1p-120 : 1.0));
   }
   for (int i = 0; i < n_degenerate; ++i) cases.push_back(g.degenerate(i));
+  for (int i = 0; i < n_narrow; ++i) cases.push_back(g.int_narrow_limit());
   const int n = static_cast<int>(cases.size());
 
   const int blocks = 64, threads = 64;  // few threads: exact work is register-hungry
@@ -175,8 +177,8 @@ TEST(GpuPredicates, MatchGmpAndHost) {
         fail(i, "sos disagrees with a non-zero exact sign");
     }
   }
-  std::printf("[gpu] %d cases (%d random, %d degenerate) in %.2f s on the device; %ld brute-force "
-              "SoS checks\n", n, n_random, n_degenerate, sec, brute);
+  std::printf("[gpu] %d cases (%d random, %d degenerate, %d at the integer stage's narrow limit) in %.2f s on "
+              "the device; %ld brute-force SoS checks\n", n, n_random, n_degenerate, n_narrow, sec, brute);
   EXPECT_EQ(bad, 0);
   EXPECT_EQ(zero_sos, 0);
 }
