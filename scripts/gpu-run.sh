@@ -112,6 +112,12 @@ pathlib.Path(sys.argv[2]).write_text(json.dumps(rows, indent=1))
 PY
 }
 
+# the same with gdel-bench-old (beside gdel-bench in the binaries' folder): bench_old NAME LIMIT ARGS
+bench_old() {
+  local gb="$bin/gdel-bench-old"
+  bench "$@"
+}
+
 # old / new binary alternating, ROUNDS times (default 2), on the same arguments:
 # alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
 alternate() {
@@ -976,6 +982,29 @@ case "$plan" in
     bench s29c_others 90 --dist uniform,gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     bench s29c_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_PROFILE=1 bench s29c_prof 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s40a)  # session 40: the integer stage's narrow form (minors.hpp): every GPU test that evaluates exact
+          # predicates on integer input (predicates against GMP with the narrow-limit cases, the flips,
+          # the repair, gStar4D, gReg3D's power tests, the star stage, hostile input)
+    step predicates 200 "$tbin/gpu_predicates"
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    step greg3d 150 "$tbin/gpu_greg3d"
+    step gstar4d 150 "$tbin/gpu_gstar4d"
+    step star_stage 100 "$tbin/gpu_star_stage"
+    step hostile 200 "$tbin/gpu_hostile"
+    ;;
+  s40b)  # session 40, benchmarks: gdel-bench-old (the build of HEAD before the narrow form) against
+          # gdel-bench, alternating, two rounds, at 10^6 on uniform, grid, sphere; then the other
+          # generators and uniform 10^7 with the new binary, and step profiles of both on grid and sphere
+    for r in 1 2; do
+      bench_old "s40b_old_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s40b_new_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    bench s40b_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s40b_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench_old s40b_prof_old 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s40b_prof_new 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
   s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
           # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
