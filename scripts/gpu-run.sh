@@ -1001,10 +1001,15 @@ case "$plan" in
       bench_old "s40b_old_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
       bench "s40b_new_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     done
-    bench s40b_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    bench s40b_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_PROFILE=1 bench_old s40b_prof_old 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s40b_prof_new 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s40c)  # session 40: the other generators and uniform 10^7 (new binary); the CPU backend on the host's
+          # threads, old against new, on grid and sphere 10^6 (the same predicates on the host)
+    bench s40c_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s40c_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench_old s40c_cpu_old 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
+    bench s40c_cpu_new 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
     ;;
   s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
           # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
