@@ -607,6 +607,19 @@ bool int_stage(const gdel::geom::detail::LiftedRows& R, const int* cols, int& s)
   const int rows[5] = {0, 1, 2, 3, 4};
   return gdel::geom::detail::det_ones_int<K>(R, rows, cols, s);
 }
+// f(R, mask, cols, kc) for every column mask 1..15 (kc columns cols[0..kc)) of the five
+// points of k, with the oracle loaded (weighted) for o.minor(mask).
+template <class F>
+void for_each_minor(const Case& k, Oracle& o, F f) {
+  const gdel::geom::detail::LiftedRows R{{k.p[0], k.p[1], k.p[2], k.p[3], k.p[4]},
+                                         {k.w[0], k.w[1], k.w[2], k.w[3], k.w[4]}};
+  o.load(k, 5, true);
+  for (unsigned mask = 1; mask < 16; ++mask) {
+    int cols[4];
+    const int kc = gdel::geom::detail::mask_columns(mask, cols);
+    f(R, mask, cols, kc);
+  }
+}
 }  // namespace
 
 TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
@@ -620,12 +633,7 @@ TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
   for (long t = 0; t < 60000; ++t) {
     // the integer family; every fourth case another family (fractions, huge, tiny: refused)
     const Case k = g.degenerate(t % 4 ? 9 : static_cast<int>(t / 4));
-    gdel::geom::detail::LiftedRows R{{k.p[0], k.p[1], k.p[2], k.p[3], k.p[4]},
-                                     {k.w[0], k.w[1], k.w[2], k.w[3], k.w[4]}};
-    o.load(k, 5, true);
-    for (unsigned mask = 1; mask < 16; ++mask) {
-      int cols[4];
-      const int kc = gdel::geom::detail::mask_columns(mask, cols);
+    for_each_minor(k, o, [&](const gdel::geom::detail::LiftedRows& R, unsigned mask, const int* cols, int kc) {
       // the entries at scale 1, or all of them times 4 (weights times 16)
       const auto entries_ok = [&](double sc) {
         bool e = true;
@@ -652,13 +660,13 @@ TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
       if (ok != expect) fail.add("integer stage taken=" + std::to_string(ok) + " mask " + std::to_string(mask) + " " + describe(k, 5));
       if (!ok) {
         ++refused;
-        continue;
+        return;
       }
       ++taken;
       const int x = o.minor(mask);
       zeros += x == 0;
       if (s != x) fail.add("integer stage sign, mask " + std::to_string(mask) + " " + describe(k, 5));
-    }
+    });
   }
   std::printf("[integer stage] %ld minors taken (%ld zero, %ld at the quarter scale), %ld refused\n", taken, zeros,
               quarters, refused);
@@ -710,12 +718,7 @@ TEST(Predicates, IntegerStageNarrowFormAtItsLimitsMatchesGmp) {
   NarrowTally n;
   for (long t = 0; t < 40000; ++t) {
     const Case k = g.int_narrow_limit();
-    gdel::geom::detail::LiftedRows R{{k.p[0], k.p[1], k.p[2], k.p[3], k.p[4]},
-                                     {k.w[0], k.w[1], k.w[2], k.w[3], k.w[4]}};
-    o.load(k, 5, true);
-    for (unsigned mask = 1; mask < 16; ++mask) {
-      int cols[4];
-      const int kc = gdel::geom::detail::mask_columns(mask, cols);
+    for_each_minor(k, o, [&](const gdel::geom::detail::LiftedRows& R, unsigned mask, const int* cols, int kc) {
       const int x = o.minor(mask);
       n.zeros += x == 0;
       const std::string what = "mask " + std::to_string(mask) + " " + describe(k, 5);
@@ -725,7 +728,7 @@ TEST(Predicates, IntegerStageNarrowFormAtItsLimitsMatchesGmp) {
         case 3: check_int_forms<3>(R, cols, x, n, fail, what); break;
         default: check_int_forms<4>(R, cols, x, n, fail, what); break;
       }
-    }
+    });
   }
   std::printf("[integer stage, narrow limit] narrow form %ld, 128-bit only %ld, zero last column %ld, "
               "exact zeros %ld\n", n.narrow, n.wide_only, n.zero_column, n.zeros);
