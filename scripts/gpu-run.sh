@@ -983,16 +983,26 @@ case "$plan" in
     bench s29c_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_PROFILE=1 bench s29c_prof 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
-  s40a)  # session 40: the integer stage's narrow form (minors.hpp): every GPU test that evaluates exact
-          # predicates on integer input (predicates against GMP with the narrow-limit cases, the flips,
-          # the repair, gStar4D, gReg3D's power tests, the star stage, hostile input)
+  s40a)  # session 40: the integer stage's narrow form (minors.hpp): the GPU tests that evaluate exact
+          # predicates on integer input, in two folders (the carry limit): predicates against GMP with
+          # the narrow-limit cases, the flips, the repair, gReg3D's power tests (s40a); gStar4D, the star
+          # stage, hostile input (s40e)
     step predicates 200 "$tbin/gpu_predicates"
     step gflip3d 150 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
     step greg3d 150 "$tbin/gpu_greg3d"
+    ;;
+  s40e)  # session 40: the rest of s40a's tests; then a window of the sphere's large flip iterations
+          # under ncu (durations and grids only: one pass; s40c's six metrics took 3 passes a kernel and
+          # did not finish in 300 s), 300 flip_iteration kernels past the first 1 800 of them
     step gstar4d 150 "$tbin/gpu_gstar4d"
     step star_stage 100 "$tbin/gpu_star_stage"
     step hostile 200 "$tbin/gpu_hostile"
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    step s40e_ncu 200 "$ncu" --clock-control none --kernel-name-base demangled --kernel-name regex:flip_iteration \
+      --launch-skip 1800 --launch-count 300 --csv --metrics gpu__time_duration.sum,launch__grid_size,launch__block_size,launch__registers_per_thread \
+      "$gb" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    cp /tmp/gpu-run-s40e_ncu.log "$out/ncu_sphere.csv" 2>/dev/null
     ;;
   s40b)  # session 40, benchmarks: gdel-bench-old (the build of HEAD before the narrow form) against
           # gdel-bench, alternating, two rounds, at 10^6 on uniform, grid, sphere; then the other
@@ -1010,6 +1020,13 @@ case "$plan" in
     bench s40c_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     bench_old s40c_cpu_old 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
     bench s40c_cpu_new 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
+    # where the sphere's large propose goes (its tie arithmetic did not matter on the GPU, s40b): every
+    # kernel of flip_iteration (the fast pass, the undecided lists, the exact tiers), summed per kernel
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    step s40c_ncu 300 "$ncu" --clock-control none --kernel-name-base demangled --kernel-name regex:flip_iteration \
+      --print-summary per-kernel --metrics gpu__time_duration.sum,launch__registers_per_thread,launch__grid_size,sm__warps_active.avg.pct_of_peak_sustained_active,l1tex__t_sectors_pipe_lsu_mem_local_op_ld.sum,smsp__sass_inst_executed.sum \
+      "$gb" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    cp /tmp/gpu-run-s40c_ncu.log "$out/ncu_sphere.txt" 2>/dev/null
     ;;
   s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
           # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
