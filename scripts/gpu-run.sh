@@ -1028,6 +1028,35 @@ case "$plan" in
       "$gb" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     cp /tmp/gpu-run-s40c_ncu.log "$out/ncu_sphere.txt" 2>/dev/null
     ;;
+  s40f)  # session 40: the rare exact paths out of line (minors.hpp: det_int_wide_sign,
+          # det_ones_expansion_sign): gdel-bench-old (6195bda) against gdel-bench, alternating, two rounds,
+          # at 10^6 on uniform, grid, sphere; uniform 10^7 both; a step profile of each on sphere and grid;
+          # the registers and stacks of both binaries' heaviest kernels (cuobjdump)
+    for r in 1 2; do
+      bench_old "s40f_old_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s40f_new_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    bench_old s40f_e7_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s40f_e7_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench_old s40f_prof_old 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s40f_prof_new 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    for b in gdel-bench-old gdel-bench; do
+      cuobjdump -res-usage "$bin/$b" >"/tmp/res-$b.txt" 2>&1
+      python3 - "$b" "/tmp/res-$b.txt" <<'PY' | tee -a "$out/summary.txt"
+import re, subprocess, sys
+items = re.findall(r"Function ([^\s:]+):\s*\n\s*REG:(\d+) STACK:(\d+)", open(sys.argv[2]).read())
+names = subprocess.run(["c++filt"], input="\n".join(i[0] for i in items), capture_output=True, text=True).stdout.split("\n")
+rows = sorted(((int(s), int(r), n) for (_, r, s), n in zip(items, names)), reverse=True)
+print(f"== {sys.argv[1]}: {len(rows)} kernels, {sum(r == 255 for _, r, _ in rows)} at 255 registers")
+for s, r, n in rows[:8]:
+    m = re.findall(r"(GFlip3D|Splayer|GDel3D|GStar4D)<[^>]*>::(\w+)", n)
+    print(f"   stack {s:6d} B  regs {r:3d}  {m[-1] if m else n[:80]}")
+for s, r, n in rows:
+    if n.startswith("void gdel::par::detail::scratch_kernel") and "flip_iteration" in n:
+        print(f"   stack {s:6d} B  regs {r:3d}  flip_iteration's exact pass")
+PY
+    done
+    ;;
   s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
           # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
     for r in 1 2; do
