@@ -1028,7 +1028,7 @@ case "$plan" in
       "$gb" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     cp /tmp/gpu-run-s40c_ncu.log "$out/ncu_sphere.txt" 2>/dev/null
     ;;
-  s40f)  # session 40: the rare exact paths out of line (minors.hpp: det_int_wide_sign,
+  s40f)  # session 40: a probe (reverted: bench/RESULTS.md) with the rare exact paths out of line (det_int_wide_sign,
           # det_ones_expansion_sign): gdel-bench-old (6195bda) against gdel-bench, alternating, two rounds,
           # at 10^6 on uniform, grid, sphere; uniform 10^7 both; a step profile of each on sphere and grid;
           # the registers and stacks of both binaries' heaviest kernels (cuobjdump)
