@@ -1021,7 +1021,8 @@ case "$plan" in
     bench_old s40c_cpu_old 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
     bench s40c_cpu_new 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
     # where the sphere's large propose goes (its tie arithmetic did not matter on the GPU, s40b): every
-    # kernel of flip_iteration (the fast pass, the undecided lists, the exact tiers), summed per kernel
+    # kernel of flip_iteration (the fast pass, the undecided lists, the exact tiers), summed per kernel.
+    # It timed out at 300 s in session 40 (six metrics: 3 passes a kernel); s40e's one-pass window works
     ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
     step s40c_ncu 300 "$ncu" --clock-control none --kernel-name-base demangled --kernel-name regex:flip_iteration \
       --print-summary per-kernel --metrics gpu__time_duration.sum,launch__registers_per_thread,launch__grid_size,sm__warps_active.avg.pct_of_peak_sustained_active,l1tex__t_sectors_pipe_lsu_mem_local_op_ld.sum,smsp__sass_inst_executed.sum \
