@@ -116,8 +116,6 @@ inline constexpr std::size_t kPredicateWork = kPowerWork;
 static_assert(kPredicateWork >= kOrient3dWork && kPredicateWork >= kInsphereWork &&
               kPredicateWork >= kMinorWork && kPredicateWork == 7015);
 
-GDEL_HD inline int lifted_minor(const double* const* p, const double* w, unsigned mask, double* work);
-
 namespace detail {
 
 // Sorts idx[0..N) ascending with a sorting network (N = 4 or 5), applying the same swaps
@@ -208,11 +206,10 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
   std::int64_t idx[5] = {ids[0], ids[1], ids[2], ids[3], ids[4]};
   int perm[5] = {0, 1, 2, 3, 4};
   const int swaps = sort_network<5>(idx, perm);
-  const double* P[5];
-  double W[5];
+  LiftedRows R;  // the sorted rows
   for (int r = 0; r < 5; ++r) {
-    P[r] = p[perm[r]];
-    W[r] = weighted ? w[perm[r]] : 0.0;
+    R.p[r] = p[perm[r]];
+    R.w[r] = weighted ? w[perm[r]] : 0.0;
   }
   // sign of the permutation sigma (rows -> columns)
   auto parity = [](const int* sigma) {
@@ -221,16 +218,15 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
       for (int j = i + 1; j < 5; ++j) inv += sigma[i] > sigma[j];
     return (inv & 1) ? -1 : 1;
   };
-  // sign of det of rows `rows` (ascending, k+1 of them) over columns `mask` + the ones
-  auto minor = [&](const int* rows, int nrows, unsigned mask) -> int {
+  // sign of det of the sorted rows `rows` (ascending, popcount(mask) + 1 of them) over the
+  // columns `mask` + the ones. Every mask here has at most 3 columns (the pure term of
+  // E = {} is the exact value, skipped; any other term loses a column to E or to an e_r),
+  // so the minor is minor_sign's: no 4-column evaluator is compiled in (on the GPU that
+  // path's registers and stack were the kernels'; bench/RESULTS.md, session 41).
+  auto minor = [&](const int* rows, unsigned mask) -> int {
     if (mask == 0) return 1;  // the 1x1 determinant [1]
-    const double* q[5];
-    double qw[5];
-    for (int i = 0; i < nrows; ++i) {
-      q[i] = P[rows[i]];
-      qw[i] = W[rows[i]];
-    }
-    return lifted_minor(q, weighted ? qw : nullptr, mask, work);
+    assert((mask & 15u) != 15u);
+    return minor_sign(R, rows, mask, weighted, work);
   };
   for (unsigned E = 0; E < (1u << 15); ++E) {
     int row_of_col[3] = {-1, -1, -1};
@@ -274,14 +270,15 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
           rows[nrows++] = r;
         }
       const unsigned mask = free_cols | (extra < 5 ? 0u : unsigned(kColH));
-      const int m = minor(rows, nrows, mask);
+      const int m = minor(rows, mask);
       if (m != 0) {
         const int v = parity(sigma) * m;  // sign of the perturbed det5 of the sorted rows
         return (swaps & 1) ? v : -v;      // value = -det5(original order)
       }
     }
   }
-  return lifted_sos_degenerate(p, w, ids, weighted, work);  // unreachable: E={x,y,z} + e gives 1
+  assert(false && "unreachable: E = {x, y, z} with an e term is the minor 1");
+  return 1;
 }
 
 }  // namespace detail
