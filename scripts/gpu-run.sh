@@ -129,6 +129,27 @@ alternate() {
   done
 }
 
+# The registers and stack per thread of each binary's heaviest kernels (cuobjdump), and of
+# flip_iteration's exact passes: res_usage BINARY... (names in the binaries' folder)
+res_usage() {
+  for b in "$@"; do
+    cuobjdump -res-usage "$bin/$b" >"/tmp/res-$b.txt" 2>&1
+    python3 - "$b" "/tmp/res-$b.txt" <<'PY' | tee -a "$out/summary.txt"
+import re, subprocess, sys
+items = re.findall(r"Function ([^\s:]+):\s*\n\s*REG:(\d+) STACK:(\d+)", open(sys.argv[2]).read())
+names = subprocess.run(["c++filt"], input="\n".join(i[0] for i in items), capture_output=True, text=True).stdout.split("\n")
+rows = sorted(((int(s), int(r), n) for (_, r, s), n in zip(items, names)), reverse=True)
+print(f"== {sys.argv[1]}: {len(rows)} kernels, {sum(r == 255 for _, r, _ in rows)} at 255 registers")
+for s, r, n in rows[:8]:
+    m = re.findall(r"(GFlip3D|Splayer|GDel3D|GStar4D)<[^>]*>::(\w+)", n)
+    print(f"   stack {s:6d} B  regs {r:3d}  {m[-1] if m else n[:80]}")
+for s, r, n in rows:
+    if n.startswith("void gdel::par::detail::scratch_kernel") and "flip_iteration" in n:
+        print(f"   stack {s:6d} B  regs {r:3d}  flip_iteration's exact pass")
+PY
+  done
+}
+
 # The gFlip3D/gDel3D comparison of an old and a new binary: tests, alternate on uniform,
 # grid and sphere 10^6, uniform 10^7 old then new, step profiles of new: flipcmp TAG
 flipcmp() {
@@ -1041,22 +1062,7 @@ case "$plan" in
     bench s40f_e7_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_PROFILE=1 bench_old s40f_prof_old 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s40f_prof_new 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
-    for b in gdel-bench-old gdel-bench; do
-      cuobjdump -res-usage "$bin/$b" >"/tmp/res-$b.txt" 2>&1
-      python3 - "$b" "/tmp/res-$b.txt" <<'PY' | tee -a "$out/summary.txt"
-import re, subprocess, sys
-items = re.findall(r"Function ([^\s:]+):\s*\n\s*REG:(\d+) STACK:(\d+)", open(sys.argv[2]).read())
-names = subprocess.run(["c++filt"], input="\n".join(i[0] for i in items), capture_output=True, text=True).stdout.split("\n")
-rows = sorted(((int(s), int(r), n) for (_, r, s), n in zip(items, names)), reverse=True)
-print(f"== {sys.argv[1]}: {len(rows)} kernels, {sum(r == 255 for _, r, _ in rows)} at 255 registers")
-for s, r, n in rows[:8]:
-    m = re.findall(r"(GFlip3D|Splayer|GDel3D|GStar4D)<[^>]*>::(\w+)", n)
-    print(f"   stack {s:6d} B  regs {r:3d}  {m[-1] if m else n[:80]}")
-for s, r, n in rows:
-    if n.startswith("void gdel::par::detail::scratch_kernel") and "flip_iteration" in n:
-        print(f"   stack {s:6d} B  regs {r:3d}  flip_iteration's exact pass")
-PY
-    done
+    res_usage gdel-bench-old gdel-bench
     ;;
   s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
           # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
@@ -1067,6 +1073,31 @@ PY
     ;;
   smoke)  # the script's own plumbing, in seconds (also on a machine without a GPU)
     bench smoke 60 --dist uniform --n 2000 --methods gdel3d-cpu,gstar4d-cpu --repeat 1
+    ;;
+  s41a)  # session 41: the lift SoS's minors through minor_sign (predicates.hpp): gdel-bench-old (6195bda's
+          # code) against gdel-bench, alternating, two rounds, at 10^6 on uniform, grid, sphere; uniform
+          # 10^7 both; a step profile of each on sphere and grid; both binaries' registers and stacks
+    for r in 1 2; do
+      bench_old "s41a_old_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s41a_new_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    bench_old s41a_e7_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s41a_e7_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench_old s41a_prof_old 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s41a_prof_new 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    res_usage gdel-bench-old gdel-bench
+    ;;
+  s41b)  # session 41: the GPU tests whose exact decisions go through the lift SoS: predicates against GMP,
+          # the flips (insphere), the repair (orient4 of the stars)
+    step predicates 200 "$tbin/gpu_predicates"
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    ;;
+  s41c)  # session 41: the rest of the tests that decide by the lift SoS: gReg3D (power, its star deaths),
+          # gStar4D, hostile input
+    step greg3d 150 "$tbin/gpu_greg3d"
+    step gstar4d 150 "$tbin/gpu_gstar4d"
+    step hostile 200 "$tbin/gpu_hostile"
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
