@@ -1099,6 +1099,12 @@ case "$plan" in
     step gstar4d 150 "$tbin/gpu_gstar4d"
     step hostile 200 "$tbin/gpu_hostile"
     ;;
+  s41d)  # session 41: the other generators (new binary, GPU); the CPU backend on the host's threads, old
+          # against new, on grid and sphere 10^6 (the same lift SoS on the host)
+    bench s41d_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench_old s41d_cpu_old 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
+    bench s41d_cpu_new 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
