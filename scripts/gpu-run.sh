@@ -150,6 +150,22 @@ PY
   done
 }
 
+# gdel-bench-old against gdel-bench: alternating, two rounds, at 10^6 on uniform, grid,
+# sphere (medians of 5); uniform 10^7 both; a step profile of each on sphere and grid;
+# both binaries' registers and stacks: oldnew TAG
+oldnew() {
+  local tag=$1
+  for r in 1 2; do
+    bench_old "${tag}_old_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench "${tag}_new_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+  done
+  bench_old "${tag}_e7_old" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+  bench "${tag}_e7_new" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+  GDEL_PROFILE=1 bench_old "${tag}_prof_old" 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+  GDEL_PROFILE=1 bench "${tag}_prof_new" 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+  res_usage gdel-bench-old gdel-bench
+}
+
 # The gFlip3D/gDel3D comparison of an old and a new binary: tests, alternate on uniform,
 # grid and sphere 10^6, uniform 10^7 old then new, step profiles of new: flipcmp TAG
 flipcmp() {
@@ -1054,15 +1070,7 @@ case "$plan" in
           # det_ones_expansion_sign): gdel-bench-old (6195bda) against gdel-bench, alternating, two rounds,
           # at 10^6 on uniform, grid, sphere; uniform 10^7 both; a step profile of each on sphere and grid;
           # the registers and stacks of both binaries' heaviest kernels (cuobjdump)
-    for r in 1 2; do
-      bench_old "s40f_old_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      bench "s40f_new_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
-    bench_old s40f_e7_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    bench s40f_e7_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    GDEL_PROFILE=1 bench_old s40f_prof_old 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 bench s40f_prof_new 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
-    res_usage gdel-bench-old gdel-bench
+    oldnew s40f
     ;;
   s27g)  # session 27: the CPU backend on the device host's 16 threads since the cavity insertion
           # (session 26), against CGAL sequential and parallel in the same process; the flips alongside
@@ -1077,15 +1085,7 @@ case "$plan" in
   s41a)  # session 41: the lift SoS's minors through minor_sign (predicates.hpp): gdel-bench-old (6195bda's
           # code) against gdel-bench, alternating, two rounds, at 10^6 on uniform, grid, sphere; uniform
           # 10^7 both; a step profile of each on sphere and grid; both binaries' registers and stacks
-    for r in 1 2; do
-      bench_old "s41a_old_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      bench "s41a_new_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
-    bench_old s41a_e7_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    bench s41a_e7_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    GDEL_PROFILE=1 bench_old s41a_prof_old 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 bench s41a_prof_new 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
-    res_usage gdel-bench-old gdel-bench
+    oldnew s41a
     ;;
   s41b)  # session 41: the GPU tests whose exact decisions go through the lift SoS: predicates against GMP,
           # the flips (insphere), the repair (orient4 of the stars)
