@@ -1105,6 +1105,12 @@ case "$plan" in
     bench_old s41d_cpu_old 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
     bench s41d_cpu_new 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
     ;;
+  s41e)  # session 41: the scratch-free exact passes' threads per SM (GDEL_FREE_PER_SM; default 2 048) now
+          # that they hold 224-255 registers (256-288 resident a SM): grid and sphere 10^6, new binary
+    for f in 256 512 1024 2048; do
+      GDEL_FREE_PER_SM=$f bench "s41e_free$f" 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
