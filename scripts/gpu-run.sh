@@ -118,13 +118,13 @@ bench_old() {
   bench "$@"
 }
 
-# old / new binary alternating, ROUNDS times (default 2), on the same arguments:
-# alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
+# old / new binary alternating, ROUNDS times (default 2), on the same arguments, both in
+# the JSON: alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
 alternate() {
   local tag=$1
   shift
   for r in $(seq "${ROUNDS:-2}"); do
-    step "${tag}_old$r" 60 "$bin/gdel-bench-old" "$@"
+    bench_old "${tag}_old$r" 60 "$@"
     bench "${tag}_new$r" 60 "$@"
   done
 }
@@ -155,14 +155,9 @@ PY
 # both binaries' registers and stacks: oldnew TAG
 oldnew() {
   local tag=$1
-  for r in 1 2; do
-    bench_old "${tag}_old_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    bench "${tag}_new_$r" 90 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-  done
-  bench_old "${tag}_e7_old" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-  bench "${tag}_e7_new" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-  GDEL_PROFILE=1 bench_old "${tag}_prof_old" 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
-  GDEL_PROFILE=1 bench "${tag}_prof_new" 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+  alternate "$tag" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+  ROUNDS=1 alternate "${tag}_e7" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+  GDEL_PROFILE=1 ROUNDS=1 alternate "${tag}_prof" --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
   res_usage gdel-bench-old gdel-bench
 }
 
