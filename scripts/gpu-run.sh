@@ -145,7 +145,14 @@ for s, r, n in rows[:8]:
     print(f"   stack {s:6d} B  regs {r:3d}  {m[-1] if m else n[:80]}")
 for s, r, n in rows:
     if n.startswith("void gdel::par::detail::scratch_kernel") and "flip_iteration" in n:
-        print(f"   stack {s:6d} B  regs {r:3d}  flip_iteration's exact pass")
+        free = " (scratch-free)" if n.startswith("void gdel::par::detail::scratch_kernel<true") else ""
+        print(f"   stack {s:6d} B  regs {r:3d}  flip_iteration's exact pass{free}")
+for free in ("true", "false"):  # the exact passes' kernels, scratch-free (session 42) and with a scratch
+    ks = [(r, s) for s, r, n in rows if n.startswith(f"void gdel::par::detail::scratch_kernel<{free}")]
+    if ks:
+        regs = sorted(r for r, _ in ks)
+        print(f"   scratch_kernel<{free}>: {len(ks)} kernels, {sum(r == 255 for r in regs)} at 255 registers, "
+              f"median {regs[len(regs) // 2]} registers, most stack {max(s for _, s in ks)} B")
 PY
   done
 }
@@ -1105,6 +1112,23 @@ case "$plan" in
     for f in 256 512 1024 2048; do
       GDEL_FREE_PER_SM=$f bench "s41e_free$f" 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 3
     done
+    ;;
+  s42a)  # session 42: the scratch-free exact passes as their own kernels, work the constant nullptr, and the
+          # SoS walks on integers converted once (predicates.hpp, exact_batch.hpp): gdel-bench-old (211af19's
+          # code) against gdel-bench, as s41a
+    oldnew s42a
+    ;;
+  s42b)  # session 42: the GPU tests that decide through the new walks and kernels: predicates against GMP
+          # (with and without a scratch), the flips, the repair
+    step predicates 200 "$tbin/gpu_predicates"
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    ;;
+  s42c)  # session 42: gReg3D (power), gStar4D, hostile input; the other generators (new binary)
+    step greg3d 150 "$tbin/gpu_greg3d"
+    step gstar4d 150 "$tbin/gpu_gstar4d"
+    step hostile 200 "$tbin/gpu_hostile"
+    bench s42c_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

@@ -40,8 +40,8 @@ GDEL_HD inline int split_shared_face(int j, int i) {
 }
 
 // Child of the split of o by p that contains q: 0..3, or kUndecidedResult.
-template <bool Exact>
-GDEL_HD int split_locate(const Geo& g, const vid_t o[4], vid_t p, vid_t q, double* work) {
+template <bool Exact, class Work>
+GDEL_HD int split_locate(const Geo& g, const vid_t o[4], vid_t p, vid_t q, Work work) {
   int c = 0;
   for (int step = 0; step < 6; ++step) {
     vid_t cv[4];
@@ -119,8 +119,8 @@ GDEL_HD inline vid_t apex_across(const MeshView& m, tid_t b, const vid_t* bv, in
 // the new tet (that edge, x, bv[i]) is not positive, i.e. the segment from bv[i] to x
 // does not cross the face inside that edge. 0: the 2-3 flip is valid. Stops at the first
 // blocking edge unless all_edges; kUndecidedResult when a test is undecided.
-template <bool Exact>
-GDEL_HD int flip23_blockers(const Geo& g, const vid_t* bv, int i, vid_t x, bool all_edges, double* work) {
+template <bool Exact, class Work>
+GDEL_HD int flip23_blockers(const Geo& g, const vid_t* bv, int i, vid_t x, bool all_edges, Work work) {
   int mask = 0;
   for (int k = 0; k < 3 && (all_edges || mask == 0); ++k) {
     int sk = g.orient<Exact>(pick4(bv, face_vertex(i, k)), pick4(bv, face_vertex(i, (k + 1) % 3)), x, pick4(bv, i), work);
@@ -132,8 +132,8 @@ GDEL_HD int flip23_blockers(const Geo& g, const vid_t* bv, int i, vid_t x, bool 
 
 // Non-locally-Delaunay face i of tet bv (apex[] = the apexes across bv's faces): its
 // flip proposal, -1 when neither flip is valid (stuck), or kUndecidedResult.
-template <bool Exact>
-GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, double* work) {
+template <bool Exact, class Work>
+GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, Work work) {
   const vid_t x = pick4(apex, i), bi = pick4(bv, i);
   // 3-2: the edge of face i opposite corner k has degree 3 iff face k's apex is x.
   for (int k = 0; k < 4; ++k) {
@@ -153,8 +153,8 @@ GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, d
 // Calls f(bv, apex, i) for the faces i of tet b (vertices bv, apex[] across its faces)
 // that have a neighbour, are not internal and are not locally Delaunay, in order, until
 // f returns something other than -1; returns that value, -1, or kUndecidedResult.
-template <bool Exact, class F>
-GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, double* work, F f) {
+template <bool Exact, class Work, class F>
+GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, Work work, F f) {
   if (!m.alive(b)) return -1;
   const Tet bt = m.tet[b];
   const vid_t* bv = bt.v;
@@ -179,8 +179,8 @@ GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, 
 // The flip tet b proposes: that of its first face with a valid flip (faces that are not
 // flippable now are skipped); kStuckResult when it has non-locally-Delaunay faces but
 // none is flippable, -1 when all its faces are locally Delaunay, or kUndecidedResult.
-template <bool Exact>
-GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, double* work) {
+template <bool Exact, class Work>
+GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, Work work) {
   bool stuck = false;
   const int r = static_cast<int>(for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
     const int f = face_flip<Exact>(g, bv, apex, i, work);
@@ -238,9 +238,9 @@ GDEL_HD inline bool same_orientation(const vid_t* bv, vid_t p, vid_t q, vid_t c,
 // The first ear cut of a removal of edge (p, q) of tet b, c being b's third vertex of the
 // stuck facet (see above), as a packed proposal; -1 when no removal is possible;
 // kUndecidedResult.
-template <bool Exact>
+template <bool Exact, class Work>
 GDEL_HD std::int64_t edge_removal_ear(const Geo& g, const MeshView& m, tid_t b, vid_t p, vid_t q, vid_t c,
-                                      double* work) {
+                                      Work work) {
   if (p == g.inf || q == g.inf) return -1;
   vid_t L[kMaxRing];
   tid_t lt[kMaxRing];  // lt[j]: the ring's tet (p, q, L[j], L[j+1 mod d]); li[j]: its face opposite L[j]
@@ -328,8 +328,8 @@ GDEL_HD std::int64_t edge_removal_ear(const Geo& g, const MeshView& m, tid_t b, 
 // block its 2-3 flip, or with other_edges, failing those, of one of its other edges.
 // Returns a packed proposal, -1 (none, also when some face is normally flippable: the
 // normal flip loop goes first), or kUndecidedResult.
-template <bool Exact>
-GDEL_HD std::int64_t propose_nonoptimal(const Geo& g, const MeshView& m, tid_t b, bool other_edges, double* work) {
+template <bool Exact, class Work>
+GDEL_HD std::int64_t propose_nonoptimal(const Geo& g, const MeshView& m, tid_t b, bool other_edges, Work work) {
   constexpr std::int64_t kNormal = -3;  // a face has a normal flip
   // (not const: nvcc 13 crashes on a const local whose initializer holds a lambda)
   std::int64_t r = for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
@@ -395,8 +395,8 @@ GDEL_HD inline void flip_outputs(const MeshView& m, tid_t b, int prop, FlipRec& 
 }
 
 // Orders a 3-2 record so that (r0, r1, r2, eA) is positive.
-template <bool Exact>
-GDEL_HD int order_32(const Geo& g, FlipRec& r, double* work) {
+template <bool Exact, class Work>
+GDEL_HD int order_32(const Geo& g, FlipRec& r, Work work) {
   int s = g.orient<Exact>(r.v[0], r.v[1], r.v[2], r.v[3], work);
   if (s == par::kUndecided) return kUndecidedResult;
   if (s < 0) {
@@ -547,8 +547,8 @@ struct ExecuteFlip {
   std::uint64_t* mark;
   std::uint64_t stamp;
   ExtFaces ext;
-  template <bool Exact>
-  GDEL_HD bool run(std::int64_t f, double* work) const {
+  template <bool Exact, class Work>
+  GDEL_HD bool run(std::int64_t f, Work work) const {
     const tid_t b = A[flp[f]];
     const int p = pp[flp[f]];
     FlipRec r;
@@ -574,16 +574,19 @@ struct ExecuteFlip {
 // runs the fast form and then, if it could not decide, the exact one: few threads take
 // the exact form, and one out-of-line copy keeps it out of each kernel's main path.
 // work: the thread's scratch, or nullptr where every evaluation runs in the integer
-// stage (Geo::int_all).
-GDEL_NOINLINE GDEL_HD inline int propose_flip_exact(const Geo& g, const MeshView& m, tid_t b, double* work) {
+// stage (Geo::int_all; as std::nullptr_t, an instance without expansions).
+template <class Work>
+GDEL_NOINLINE GDEL_HD int propose_flip_exact(const Geo& g, const MeshView& m, tid_t b, Work work) {
   return propose_flip<true>(g, m, b, work);
 }
-GDEL_NOINLINE GDEL_HD inline bool execute_flip_exact(const ExecuteFlip& xf, std::int64_t f, double* work) {
+template <class Work>
+GDEL_NOINLINE GDEL_HD bool execute_flip_exact(const ExecuteFlip& xf, std::int64_t f, Work work) {
   return xf.run<true>(f, work);
 }
 // Tet b's proposal in one thread: the fast form, then the exact one where the fast one
 // could not decide (counted in nex).
-GDEL_HD inline int propose_flip_in_thread(const Geo& g, const MeshView& m, tid_t b, double* work, std::int64_t& nex) {
+template <class Work>
+GDEL_HD int propose_flip_in_thread(const Geo& g, const MeshView& m, tid_t b, Work work, std::int64_t& nex) {
   const int p = propose_flip<false>(g, m, b, nullptr);
   if (p != kUndecidedResult) return p;
   ++nex;
@@ -591,8 +594,8 @@ GDEL_HD inline int propose_flip_in_thread(const Geo& g, const MeshView& m, tid_t
 }
 
 // Which output of flip record r contains q: 0..2, or kUndecidedResult.
-template <bool Exact>
-GDEL_HD int dag_child(const Geo& g, const FlipRec& r, vid_t q, double* work) {
+template <bool Exact, class Work>
+GDEL_HD int dag_child(const Geo& g, const FlipRec& r, vid_t q, Work work) {
   if (r.type == 1) {
     const vid_t v = r.v[3], x = r.v[4];
     int a0 = g.orient<Exact>(r.v[0], x, v, q, work);

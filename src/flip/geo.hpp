@@ -11,7 +11,8 @@
 // Every decision has a fast form (floating-point filter; returns kUndecided when it
 // cannot certify a non-zero sign) and an exact form (exact arithmetic, then
 // simulation of simplicity by original input index: never 0). The exact forms take a
-// scratch of geom::kPredicateWork doubles; given work = nullptr they decide only what
+// scratch of geom::kPredicateWork doubles (as Work: double*, or std::nullptr_t for none at
+// compile time, whose instances hold no expansions: geom's predicates.hpp); without one they decide only what
 // the integer stage decides without one (Geo::int_all; or Geo::int_points and no ∞ among
 // the points, whose kernel point K is then not known to be of the stage) and answer
 // kUndecided otherwise, so that par::fast_then_exact_tiered can try them without a
@@ -64,14 +65,16 @@ struct Geo {
     bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
     return neg ? -s : s;
   }
-  GDEL_HD int orient_exact(vid_t a, vid_t b, vid_t c, vid_t d, double* work) const {
-    if (!work && !scratch_free(a, b, c, d)) return par::kUndecided;
+  template <class Work>
+  GDEL_HD int orient_exact(vid_t a, vid_t b, vid_t c, vid_t d, Work work) const {
+    if (geom::no_scratch(work) && !scratch_free(a, b, c, d)) return par::kUndecided;
     int s = geom::orient3d_sos(p(a), p(b), p(c), p(d), sid[a], sid[b], sid[c], sid[d], work);
+    if (s == geom::kUncertain) return par::kUndecided;  // (work = nullptr only)
     bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
     return neg ? -s : s;
   }
-  template <bool Exact>
-  GDEL_HD int orient(vid_t a, vid_t b, vid_t c, vid_t d, double* work) const {
+  template <bool Exact, class Work>
+  GDEL_HD int orient(vid_t a, vid_t b, vid_t c, vid_t d, Work work) const {
     if constexpr (Exact) return orient_exact(a, b, c, d, work);
     else return orient_fast(a, b, c, d);
   }
@@ -82,9 +85,11 @@ struct Geo {
     const int s = geom::orient3d_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]));
     return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
   }
-  GDEL_HD std::int8_t volume_sign_exact(const vid_t* v, double* work) const {
-    if (!work && !scratch_free(v[0], v[1], v[2], v[3])) return par::kUndecided;
-    return static_cast<std::int8_t>(geom::orient3d_exact(p(v[0]), p(v[1]), p(v[2]), p(v[3]), work));
+  template <class Work>
+  GDEL_HD std::int8_t volume_sign_exact(const vid_t* v, Work work) const {
+    if (geom::no_scratch(work) && !scratch_free(v[0], v[1], v[2], v[3])) return par::kUndecided;
+    const int s = geom::orient3d_exact(p(v[0]), p(v[1]), p(v[2]), p(v[3]), work);
+    return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
   }
 
   GDEL_HD static int inf_slot(const vid_t* t, vid_t inf) {
@@ -103,19 +108,20 @@ struct Geo {
   // hence: no ∞ → insphere_lift_sos; ∞ at slot j → move it last (odd permutation when
   // j < 4) where det = -H·orient3d_sos(the other four) decides. Finite flat tets never
   // survive as lower-hull facets under the lifting perturbation (docs/gdel3d.md).
-  template <bool Exact>
-  GDEL_HD int orient4(const vid_t* v, double* work) const {
+  template <bool Exact, class Work>
+  GDEL_HD int orient4(const vid_t* v, Work work) const {
     if constexpr (Exact) {  // (with ∞ the test is over the four finite points)
-      if (!work && !finite_scratch_free()) return par::kUndecided;
+      if (geom::no_scratch(work) && !finite_scratch_free()) return par::kUndecided;
     }
     int j = -1;
     for (int i = 0; i < 5; ++i)
       if (v[i] == inf) j = i;
     if (j < 0 && w) {
       if constexpr (Exact) {
-        return geom::power_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), w[v[0]], w[v[1]], w[v[2]],
-                                    w[v[3]], w[v[4]], sid[v[0]], sid[v[1]], sid[v[2]], sid[v[3]], sid[v[4]],
-                                    work);
+        const int s = geom::power_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), w[v[0]], w[v[1]],
+                                           w[v[2]], w[v[3]], w[v[4]], sid[v[0]], sid[v[1]], sid[v[2]], sid[v[3]],
+                                           sid[v[4]], work);
+        return s == geom::kUncertain ? int(par::kUndecided) : s;
       } else {
         int s = geom::power_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), w[v[0]], w[v[1]], w[v[2]],
                                    w[v[3]], w[v[4]]);
@@ -124,8 +130,9 @@ struct Geo {
     }
     if (j < 0) {
       if constexpr (Exact) {
-        return geom::insphere_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), sid[v[0]], sid[v[1]],
-                                       sid[v[2]], sid[v[3]], sid[v[4]], work);
+        const int s = geom::insphere_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), sid[v[0]], sid[v[1]],
+                                              sid[v[2]], sid[v[3]], sid[v[4]], work);
+        return s == geom::kUncertain ? int(par::kUndecided) : s;
       } else {
         int s = geom::insphere_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]));
         return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
@@ -136,29 +143,32 @@ struct Geo {
     int s;
     if constexpr (Exact) {
       s = geom::orient3d_sos(p(u[0]), p(u[1]), p(u[2]), p(u[3]), sid[u[0]], sid[u[1]], sid[u[2]], sid[u[3]], work);
+      if (s == geom::kUncertain) return par::kUndecided;
     } else {
       s = geom::orient3d_filter(p(u[0]), p(u[1]), p(u[2]), p(u[3]));
       if (s == geom::kUncertain || s == 0) return par::kUndecided;
     }
     return j < 4 ? s : -s;
   }
-  GDEL_HD int orient4_any(const vid_t* v, double* work) const {
+  template <class Work>
+  GDEL_HD int orient4_any(const vid_t* v, Work work) const {
     int s = orient4<false>(v, nullptr);
     return s != par::kUndecided ? s : orient4<true>(v, work);
   }
 
   // > 0 iff e is strictly inside the circumsphere of the positive tet t.
-  template <bool Exact>
-  GDEL_HD int insphere(const vid_t* t, vid_t e, double* work) const {
+  template <bool Exact, class Work>
+  GDEL_HD int insphere(const vid_t* t, vid_t e, Work work) const {
     if (e == inf) return -1;
     int j = inf_slot(t, inf);
     if (j >= 0)
       return orient<Exact>(pick4(t, face_vertex(j, 0)), pick4(t, face_vertex(j, 1)), pick4(t, face_vertex(j, 2)), e,
                            work);
     if constexpr (Exact) {
-      if (!work && !finite_scratch_free()) return par::kUndecided;
-      return geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]], sid[t[2]],
-                                     sid[t[3]], sid[e], work);
+      if (geom::no_scratch(work) && !finite_scratch_free()) return par::kUndecided;
+      const int s = geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]],
+                                            sid[t[2]], sid[t[3]], sid[e], work);
+      return s == geom::kUncertain ? int(par::kUndecided) : s;
     } else {
       int s = geom::insphere_filter(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
       return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;

@@ -97,7 +97,8 @@ struct FlipConfig {
 };
 
 // The fast/exact split of the parallel layer with the predicates' scratch size. exact
-// returns whether it decided; on integer input (Geo::int_points / int_all) the undecided items are first tried
+// returns whether it decided; a generic exact(i, auto work) gets its own instance without
+// a scratch (work of type std::nullptr_t: no expansions in it, geom's predicates.hpp); on integer input (Geo::int_points / int_all) the undecided items are first tried
 // without a scratch (par::fast_then_exact_tiered, Geo::int_points).
 // With `tally` (a counter in backend memory) the count of exact items goes there and the
 // host is not waited for; max_threads > 0 then caps the scratch threads (par::fast_then_exact).
@@ -917,7 +918,7 @@ class GFlip3D {
       pp[k] = p;
       return p != kUndecidedResult;
     };
-    auto exact = [=] GDEL_LAMBDA(std::int64_t k, double* work) {
+    auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
       const int p = propose_flip<true>(g, m, A[k], work);
       if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
       pp[k] = p;
@@ -971,7 +972,7 @@ class GFlip3D {
     std::int64_t* tally = counts_.data() + 3;
     par::for_each_with_scratch(
         ctx_, na, geom::kPredicateWork,
-        [=] GDEL_LAMBDA(std::int64_t k, double* w) {
+        [=] GDEL_LAMBDA(std::int64_t k, auto w) {
           std::int64_t nex = 0;
           pp[k] = alen && k >= *alen ? -1 : propose_flip_in_thread(g, m, A[k], w, nex);
           if (nex) par::atomic_add(tally, nex);
@@ -1222,7 +1223,7 @@ class GFlip3D {
     // iteration took, and links the others back.
     const ExecuteFlip xf{m, g, A, flp, pp, rec, src, o23, mark, stamp, ext};
     auto xfast = [=] GDEL_LAMBDA(std::int64_t f) { return xf.template run<false>(f, nullptr); };
-    auto xexact = [=] GDEL_LAMBDA(std::int64_t f, double* work) { return xf.template run<true>(f, work); };
+    auto xexact = [=] GDEL_LAMBDA(std::int64_t f, auto work) { return xf.template run<true>(f, work); };
     // adjacency across external faces: a neighbour that no flip took links back to the
     // new facet; one that flip h took is replaced by h's new facet there
     const std::uint16_t* ec = ext_code.data();
@@ -1496,7 +1497,7 @@ class GFlip3D {
           pp[k] = propose_nonoptimal<false>(g, m, F[k], other_edges, nullptr);
           return pp[k] != kUndecidedResult;
         },
-        [=] GDEL_LAMBDA(std::int64_t k, double* work) {
+        [=] GDEL_LAMBDA(std::int64_t k, auto work) {
           const std::int64_t p = propose_nonoptimal<true>(g, m, F[k], other_edges, work);
           if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
           pp[k] = p;

@@ -36,7 +36,9 @@
 // expansion, with the permanent alongside. See filters.hpp for the error analysis.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "core/macros.hpp"
 #include "geometry/expansion.hpp"
@@ -46,6 +48,11 @@
 namespace gdel::geom {
 
 inline constexpr int kUncertain = 2;  // returned by filters when the sign is not certain
+
+// Whether an exact evaluation goes without a scratch (see predicates.hpp): always for
+// work of type std::nullptr_t (known at compile time), else when the pointer is null.
+GDEL_HD constexpr bool no_scratch(std::nullptr_t) { return true; }
+GDEL_HD constexpr bool no_scratch(const double* work) { return work == nullptr; }
 
 // Column mask bits.
 inline constexpr unsigned kColX = 1u, kColY = 2u, kColZ = 4u, kColH = 8u;
@@ -315,15 +322,90 @@ GDEL_HD bool det_ones_int(const LiftedRows& R, const int* rows, const int* cols,
   return true;
 }
 
+// The integer stage over a whole SoS walk (predicates.hpp): the N sorted rows converted
+// once, x, y, z (and, for a lifted walk, h) of each as int64 at one scale, so that every
+// minor of the walk is integer arithmetic on registers, with no conversion, filter or
+// expansion per minor. One scale for every row: a minor's sign does not depend on it
+// (a positive factor per column, see above), so the signs are the per-minor stage's.
+struct IntRows {
+  std::int64_t q[5][4];
+};
+
+// Q from R's first N rows at `scale` (weights times scale^2); false when some entry is
+// not an integer of the stage's range (small_integer; h only when lifted).
+template <int N>
+GDEL_HD bool int_rows_at(const LiftedRows& R, bool lifted, double scale, IntRows& Q) {
+  const double wscale = fp::mul(scale, scale);
+  for (int r = 0; r < N; ++r) {
+    const double* p = R.p[r];
+    for (int c = 0; c < 3; ++c)
+      if (!small_integer(fp::mul(p[c], scale), kIntCoordMax, Q.q[r][c])) return false;
+    std::int64_t w = 0;
+    if (lifted && !small_integer(fp::mul(R.w[r], wscale), kIntWeightMax, w)) return false;
+    Q.q[r][3] = lifted ? Q.q[r][0] * Q.q[r][0] + Q.q[r][1] * Q.q[r][1] + Q.q[r][2] * Q.q[r][2] - w : 0;
+  }
+  return true;
+}
+template <int N>
+GDEL_HD bool int_rows(const LiftedRows& R, bool lifted, IntRows& Q) {
+  return int_rows_at<N>(R, lifted, 1.0, Q) || int_rows_at<N>(R, lifted, kIntQuarter, Q);
+}
+
+// Sign of det[[q_r, 1]] over the rows of the mask `rows` (bit r: row r of Q) and the
+// columns of the mask `cols` (kColX.. kColH, K = 1..3 of them; K + 1 rows). The K x K
+// matrix of differences to the last row (as det_ones_int) is placed at the lower right of
+// a 3 x 3 one whose other entries are those of the identity (same determinant), every
+// index fixed at compile time (selects, not a gather through memory). Its first two
+// columns then hold coordinate differences (|d| <= 2^24) or 0 / 1, only the third can be
+// a height difference (|d| <= 2^49): the 2x2 minors of the first two fit int64 (<= 2^49)
+// and the last step is three widening products (< 2^100), for every entry of the stage.
+GDEL_HD inline int int_minor_sign(const IntRows& Q, unsigned rows, unsigned cols) {
+  const int k = int(cols & 1u) + int(cols >> 1 & 1u) + int(cols >> 2 & 1u) + int(cols >> 3 & 1u);
+  const int first = 3 - k;  // padding rows and columns 0..first-1
+  std::int64_t e[4][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  int slot = first;  // the kept rows go to e[first..3], their columns to e[.][first..2]
+  for (int r = 0; r < 5; ++r) {
+    if (!(rows >> r & 1u)) continue;
+    std::int64_t v[3] = {0, 0, 0};
+    int cs = first;
+    for (int c = 0; c < 4; ++c) {
+      if (!(cols >> c & 1u)) continue;
+      for (int j = 0; j < 3; ++j)
+        if (cs == j) v[j] = Q.q[r][c];
+      ++cs;
+    }
+    for (int s = 0; s < 4; ++s)
+      if (slot == s)
+        for (int j = 0; j < 3; ++j) e[s][j] = v[j];
+    ++slot;
+  }
+  std::int64_t d[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) d[i][j] = i < first ? std::int64_t(i == j) : e[i][j] - e[3][j];
+  auto m2 = [&](int a, int b) { return d[a][0] * d[b][1] - d[b][0] * d[a][1]; };
+  const i128 det = mul_wide(d[0][2], m2(1, 2)) - mul_wide(d[1][2], m2(0, 2)) + mul_wide(d[2][2], m2(0, 1));
+  return (det > 0) - (det < 0);
+}
+
 // Exact sign of det[[q_rows[i], 1]] over cols[0..K): the integer stage where it applies,
-// else the expansions (det_work(K, m) doubles at work).
-template <int K>
-GDEL_HD int det_ones_exact_sign(const LiftedRows& R, const int* rows, const int* cols, bool weighted,
-                                double* work) {
+// else the expansions (det_work(K, m) doubles at work). Without a scratch (see
+// predicates.hpp: work of type std::nullptr_t, or a null double*): the integer stage's
+// sign, or kUncertain where it does not apply.
+template <int K, class Work>
+GDEL_HD int det_ones_exact_sign(const LiftedRows& R, const int* rows, const int* cols, bool weighted, Work work) {
+  static_assert(std::is_same_v<Work, double*> || std::is_same_v<Work, std::nullptr_t>);
   int s;
   if (det_ones_int<K>(R, rows, cols, s)) return s;
-  return ex::sign(det_ones_exact<K>(R, rows, cols, weighted, work), work);
+  if constexpr (std::is_same_v<Work, std::nullptr_t>) {
+    return kUncertain;
+  } else {
+    if (!work) return kUncertain;
+    return ex::sign(det_ones_exact<K>(R, rows, cols, weighted, work), work);
+  }
 }
+
+// -s for a sign, kUncertain kept (the exact forms given no scratch).
+GDEL_HD constexpr int negate_sign(int s) { return s == kUncertain ? s : -s; }
 
 // FP value and rounding-error-free "absolute" value of h (see filters.hpp for counts):
 //   h  = ((x*x + y*y) + z*z) - w,   ha = ((x*x + y*y) + z*z) + |w|.
@@ -392,7 +474,8 @@ GDEL_HD int det_ones_filter(const LiftedRows& R, const int* rows, const int* col
   return kUncertain;
 }
 
-// Filter then exact for K = 1..3 columns. Work: det_work(K, m) doubles.
+// Filter then exact for K = 1..3 columns. Work: det_work(K, m) doubles (nullptr: see
+// det_ones_exact_sign).
 template <int K>
 GDEL_HD int det_ones_sign(const LiftedRows& R, const int* rows, const int* cols, bool weighted,
                           double* work) {

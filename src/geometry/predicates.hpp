@@ -23,7 +23,15 @@
 //                        indices (distinct): never 0; antisymmetric in (point, index) pairs.
 //   insphere_lift_sos / power_lift_sos: perturbation of the lifting only (see below).
 // Every work buffer of kPredicateWork doubles is large enough for every function here
-// (per-function sizes: kOrient3dWork, kInsphereWork, kPowerWork, kMinorWork).
+// (per-function sizes: kOrient3dWork, kInsphereWork, kPowerWork, kMinorWork). The exact
+// and SoS forms take the work as `Work`: double* (a scratch), or std::nullptr_t (none, at
+// compile time: `nullptr`). Without a scratch (nullptr_t, or a null double*) they decide
+// what the integer stage decides (every evaluation over points of the stage:
+// integer_point below) and return kUncertain otherwise; their SoS walks run on the points
+// converted to integers once (detail::IntRows) wherever those are of the stage. The
+// nullptr_t instances hold no expansions and no per-minor walks: the scratch-free exact
+// passes (par::for_each_with_scratch) run them with fewer registers and no spills
+// (bench/RESULTS.md, session 42).
 //
 // ---------------------------------------------------------------------------------------
 // EXACT INPUT RANGE
@@ -145,72 +153,76 @@ GDEL_HD int sort_network(std::int64_t* idx, int* perm) {
   return swaps;
 }
 
-// Sign of the perturbed raw determinant det[(q, 1)] of the (already sorted) rows R, given
-// that its unperturbed value is 0: the first non-zero term of the generated table.
-GDEL_HD inline int sos_walk(const LiftedRows& R, bool lifted, bool weighted, double* work) {
+// The N points p (weights w when weighted) as rows sorted by ascending SoS index ids
+// (sort_network): R.p / R.w in that order, rows N..4 empty. Returns the number of swaps
+// (its parity is the sorting permutation's).
+template <int N>
+GDEL_HD int sorted_rows(const double* const* p, const double* w, const std::int64_t* ids, bool weighted,
+                        LiftedRows& R) {
+  std::int64_t idx[N];
+  int perm[N];
+  for (int i = 0; i < N; ++i) idx[i] = ids[i], perm[i] = i;
+  const int swaps = sort_network<N>(idx, perm);
+  for (int i = 0; i + 1 < N; ++i) assert(idx[i] != idx[i + 1] && "SoS indices must be distinct");
+  for (int r = 0; r < 5; ++r) {
+    R.p[r] = r < N ? p[perm[r]] : nullptr;
+    R.w[r] = r < N && weighted ? w[perm[r]] : 0.0;
+  }
+  return swaps;
+}
+
+// The two evaluators of a walk's minors, minor(rows, cols) with bit masks of sorted rows
+// and of columns (kColX..kColH, 1..3 of them): the integer stage on rows converted once
+// (int_minor_sign, when int_rows applies: integer input, every minor on registers), else
+// filter + exact per minor (minor_sign), whose walks run out of line so that the integer
+// walk's kernels do not carry their registers (bench/RESULTS.md, session 42).
+struct RowsMinor {
+  const LiftedRows& R;
+  bool weighted;
+  double* work;
+  GDEL_HD int operator()(unsigned rows, unsigned cols) const {
+    int rr[5], k = 0;
+    for (int r = 0; r < 5; ++r)
+      if (rows >> r & 1u) rr[k++] = r;
+    return minor_sign(R, rr, cols, weighted, work);
+  }
+};
+struct IntMinor {
+  const IntRows& Q;
+  GDEL_HD int operator()(unsigned rows, unsigned cols) const { return int_minor_sign(Q, rows, cols); }
+};
+
+// Sign of the perturbed raw determinant det[(q, 1)] of the sorted rows, given that its
+// unperturbed value is 0: the first non-zero term of the generated table.
+template <class Minor>
+GDEL_HD int sos_table_walk(bool lifted, const Minor& minor) {
   const int n = lifted ? sos::kLifted4Terms : sos::kOrient3Terms;
   for (int t = 0; t < n; ++t) {
     const sos::SosTerm term = lifted ? sos::lifted4_term(t) : sos::orient3_term(t);
     if (term.cols == 0) return term.sign;
-    int rows[5], k = 0;
-    for (int r = 0; r < 5; ++r)
-      if (term.rows & (1u << r)) rows[k++] = r;
-    const int s = minor_sign(R, rows, term.cols, weighted, work);
+    const int s = minor(term.rows, term.cols);
     if (s != 0) return term.sign * s;
   }
   assert(false && "SoS table must end with a constant term");
   return 1;
 }
 
-GDEL_HD inline int orient3d_exact_rows(const LiftedRows& R, double* work) {
-  const int rows[4] = {0, 1, 2, 3};
-  const int cols[3] = {0, 1, 2};
-  return -det_ones_exact_sign<3>(R, rows, cols, false, work);
-}
-
-GDEL_HD inline int lifted_exact_rows(const LiftedRows& R, bool weighted, double* work) {
-  const int rows[5] = {0, 1, 2, 3, 4};
-  const int cols[4] = {0, 1, 2, 3};
-  return -det_ones_exact_sign<4>(R, rows, cols, weighted, work);
-}
-
-// E-M SoS of insphere/power given that the exact value is 0.
-GDEL_HD inline int lifted_sos_degenerate(const double* const* p, const double* w,
-                                         const std::int64_t* ids, bool weighted, double* work) {
-  std::int64_t idx[5] = {ids[0], ids[1], ids[2], ids[3], ids[4]};
-  int perm[5] = {0, 1, 2, 3, 4};
-  const int swaps = sort_network<5>(idx, perm);
-  assert(idx[0] != idx[1] && idx[1] != idx[2] && idx[2] != idx[3] && idx[3] != idx[4]);
-  LiftedRows R;
-  for (int i = 0; i < 5; ++i) {
-    R.p[i] = p[perm[i]];
-    R.w[i] = weighted ? w[perm[i]] : 0.0;
-  }
-  const int v = sos_walk(R, true, weighted, work);  // sign of the perturbed det5 (sorted rows)
-  return (swaps & 1) ? v : -v;                      // value = -det5(original order)
-}
-
-// Lifting-first perturbation given that the exact value is 0. The model: sorted row r
-// (ascending original index) is the lifted point (x + d^(2^(3r)), y + d^(2^(3r+1)),
-// z + d^(2^(3r+2)), h + e_r) with e_r larger for a larger index, and every power of e
-// dominating every power of d (terms are compared by their d-degree first, then by e).
-// The determinant is linear in each height, so its terms are: for each set E of
-// position perturbations (distinct rows and columns, at most 3 entries, taken in
-// increasing d-exponent = increasing bitmask), the pure term, then the terms with one
-// e_r in decreasing e order; each coefficient is a signed minor of the unperturbed
-// matrix with rows (x, y, z, h, 1). E = {} gives the exact heights' derivatives
-// dP/dh_r = +-orient3d(other four); five coplanar points go on to position terms
-// (never the pure E-M table, whose order would not be compatible with this one).
-GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
-                                       const std::int64_t* ids, bool weighted, double* work) {
-  std::int64_t idx[5] = {ids[0], ids[1], ids[2], ids[3], ids[4]};
-  int perm[5] = {0, 1, 2, 3, 4};
-  const int swaps = sort_network<5>(idx, perm);
-  LiftedRows R;  // the sorted rows
-  for (int r = 0; r < 5; ++r) {
-    R.p[r] = p[perm[r]];
-    R.w[r] = weighted ? w[perm[r]] : 0.0;
-  }
+// Lifting-first perturbation given that the exact value is 0: the sign of the perturbed
+// det5 of the sorted rows. The model: sorted row r (ascending original index) is the
+// lifted point (x + d^(2^(3r)), y + d^(2^(3r+1)), z + d^(2^(3r+2)), h + e_r) with e_r
+// larger for a larger index, and every power of e dominating every power of d (terms are
+// compared by their d-degree first, then by e). The determinant is linear in each height,
+// so its terms are: for each set E of position perturbations (distinct rows and columns,
+// at most 3 entries, taken in increasing d-exponent = increasing bitmask), the pure term,
+// then the terms with one e_r in decreasing e order; each coefficient is a signed minor of
+// the unperturbed matrix with rows (x, y, z, h, 1). E = {} gives the exact heights'
+// derivatives dP/dh_r = +-orient3d(other four); five coplanar points go on to position
+// terms (never the pure E-M table, whose order would not be compatible with this one).
+// Every minor has at most 3 columns (the pure term of E = {} is the exact value, skipped;
+// any other term loses a column to E or to an e_r): no 4-column evaluator is compiled in
+// (on the GPU that path's registers and stack were the kernels'; RESULTS.md, session 41).
+template <class Minor>
+GDEL_HD int lift_walk(const Minor& minor) {
   // sign of the permutation sigma (rows -> columns)
   auto parity = [](const int* sigma) {
     int inv = 0;
@@ -218,28 +230,16 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
       for (int j = i + 1; j < 5; ++j) inv += sigma[i] > sigma[j];
     return (inv & 1) ? -1 : 1;
   };
-  // sign of det of the sorted rows `rows` (ascending, popcount(mask) + 1 of them) over the
-  // columns `mask` + the ones. Every mask here has at most 3 columns (the pure term of
-  // E = {} is the exact value, skipped; any other term loses a column to E or to an e_r),
-  // so the minor is minor_sign's: no 4-column evaluator is compiled in (on the GPU that
-  // path's registers and stack were the kernels'; bench/RESULTS.md, session 41).
-  auto minor = [&](const int* rows, unsigned mask) -> int {
-    if (mask == 0) return 1;  // the 1x1 determinant [1]
-    assert((mask & 15u) != 15u);
-    return minor_sign(R, rows, mask, weighted, work);
-  };
   for (unsigned E = 0; E < (1u << 15); ++E) {
     int row_of_col[3] = {-1, -1, -1};
     unsigned used_rows = 0;
     bool ok = true;
-    int k = 0;
     for (int bit = 0; bit < 15 && ok; ++bit) {
       if (!(E & (1u << bit))) continue;
       const int r = bit / 3, c = bit % 3;
       if ((used_rows & (1u << r)) || row_of_col[c] >= 0) ok = false;
       used_rows |= 1u << r;
       row_of_col[c] = r;
-      ++k;
     }
     if (!ok) continue;
     unsigned free_cols = 0;  // the unperturbed x, y, z columns left
@@ -250,9 +250,7 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
       // extra == 5: pure term; else e on row `extra`
       if (extra < 5 && (used_rows & (1u << extra))) continue;
       int sigma[5];
-      int rows[5];
-      int nrows = 0;
-      unsigned all_rows = used_rows | (extra < 5 ? 1u << extra : 0u);
+      const unsigned all_rows = used_rows | (extra < 5 ? 1u << extra : 0u);
       for (int r = 0; r < 5; ++r) sigma[r] = -1;
       for (int c = 0; c < 3; ++c)
         if (row_of_col[c] >= 0) sigma[row_of_col[c]] = c;
@@ -261,24 +259,90 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
       int cols[5];
       int nc = 0;
       for (int c = 0; c < 5; ++c) {
-        bool taken = (c < 3 && row_of_col[c] >= 0) || (c == 3 && extra < 5);
+        const bool taken = (c < 3 && row_of_col[c] >= 0) || (c == 3 && extra < 5);
         if (!taken) cols[nc++] = c;
       }
       for (int r = 0, j = 0; r < 5; ++r)
-        if (!(all_rows & (1u << r))) {
-          sigma[r] = cols[j++];
-          rows[nrows++] = r;
-        }
+        if (!(all_rows & (1u << r))) sigma[r] = cols[j++];
+      // the minor over the remaining rows and the columns mask + the ones (mask 0: the
+      // 1x1 determinant [1])
       const unsigned mask = free_cols | (extra < 5 ? 0u : unsigned(kColH));
-      const int m = minor(rows, mask);
-      if (m != 0) {
-        const int v = parity(sigma) * m;  // sign of the perturbed det5 of the sorted rows
-        return (swaps & 1) ? v : -v;      // value = -det5(original order)
-      }
+      assert((mask & 15u) != 15u);
+      const int m = mask == 0 ? 1 : minor(31u & ~all_rows, mask);
+      if (m != 0) return parity(sigma) * m;
     }
   }
   assert(false && "unreachable: E = {x, y, z} with an e term is the minor 1");
   return 1;
+}
+
+// The walks through minor_sign, out of line (see RowsMinor).
+GDEL_NOINLINE GDEL_HD inline int sos_walk_rows(const LiftedRows& R, bool lifted, bool weighted, double* work) {
+  return sos_table_walk(lifted, RowsMinor{R, weighted, work});
+}
+GDEL_NOINLINE GDEL_HD inline int lift_walk_rows(const LiftedRows& R, bool weighted, double* work) {
+  return lift_walk(RowsMinor{R, weighted, work});
+}
+
+// Sign of the perturbed det[(q, 1)] of the N sorted rows R (N = 4: orient3d's table, 5:
+// the lifted one) given that its unperturbed value is 0.
+// Given work = nullptr: the integer walk, or kUncertain where it does not apply.
+template <int N, class Work>
+GDEL_HD int sos_walk(const LiftedRows& R, bool weighted, Work work) {
+  IntRows Q;
+  if (int_rows<N>(R, N == 5, Q)) return sos_table_walk(N == 5, IntMinor{Q});
+  if constexpr (std::is_same_v<Work, std::nullptr_t>) {
+    return kUncertain;
+  } else {
+    if (!work) return kUncertain;
+    return sos_walk_rows(R, N == 5, weighted, work);
+  }
+}
+
+template <class Work>
+GDEL_HD int orient3d_exact_rows(const LiftedRows& R, Work work) {
+  const int rows[4] = {0, 1, 2, 3};
+  const int cols[3] = {0, 1, 2};
+  return negate_sign(det_ones_exact_sign<3>(R, rows, cols, false, work));
+}
+
+template <class Work>
+GDEL_HD int lifted_exact_rows(const LiftedRows& R, bool weighted, Work work) {
+  const int rows[5] = {0, 1, 2, 3, 4};
+  const int cols[4] = {0, 1, 2, 3};
+  return negate_sign(det_ones_exact_sign<4>(R, rows, cols, weighted, work));
+}
+
+// E-M SoS of insphere/power given that the exact value is 0.
+template <class Work>
+GDEL_HD int lifted_sos_degenerate(const double* const* p, const double* w, const std::int64_t* ids, bool weighted,
+                                  Work work) {
+  LiftedRows R;
+  const int swaps = sorted_rows<5>(p, w, ids, weighted, R);
+  const int v = sos_walk<5>(R, weighted, work);  // sign of the perturbed det5 (sorted rows)
+  return (swaps & 1) ? v : negate_sign(v);       // value = -det5(original order)
+}
+
+// The lifting-first perturbation (lift_walk) given that the exact value is 0; given
+// work = nullptr the integer walk, or kUncertain where it does not apply.
+template <class Work>
+GDEL_HD int lift_sos_degenerate(const double* const* p, const double* w, const std::int64_t* ids, bool weighted,
+                                Work work) {
+  LiftedRows R;
+  const int swaps = sorted_rows<5>(p, w, ids, weighted, R);
+  IntRows Q;
+  int v;
+  if (int_rows<5>(R, true, Q)) {
+    v = lift_walk(IntMinor{Q});
+  } else {
+    if constexpr (std::is_same_v<Work, std::nullptr_t>) {
+      return kUncertain;
+    } else {
+      if (!work) return kUncertain;
+      v = lift_walk_rows(R, weighted, work);
+    }
+  }
+  return (swaps & 1) ? v : -v;  // value = -det5(original order)
 }
 
 }  // namespace detail
@@ -293,7 +357,8 @@ GDEL_HD inline int lift_sos_degenerate(const double* const* p, const double* w,
 // When every point of a set passes at one of the two scales, every exact evaluation over
 // points of that set only (each predicate here, every SoS minor of theirs) is done in
 // 128-bit integers and never touches the work buffer, so callers may pass work = nullptr
-// for them (flip::Geo's exact forms do, with Geo::int_points / Geo::int_all).
+// for them and never get kUncertain (flip::Geo's exact forms do, with Geo::int_points /
+// Geo::int_all).
 inline constexpr double kQuarterScale = detail::kIntQuarter;
 GDEL_HD inline bool integer_point(const double* p, double w = 0.0, double scale = 1.0) {
   std::int64_t v;
@@ -309,33 +374,33 @@ GDEL_HD inline bool integer_point(const double* p, double w = 0.0, double scale 
 // ---------------------------------------------------------------------------------------
 
 // Exact sign of det[b-a, c-a, d-a]; work: kOrient3dWork doubles.
-GDEL_HD inline int orient3d_exact(const double* a, const double* b, const double* c,
-                                  const double* d, double* work) {
+template <class Work>
+GDEL_HD int orient3d_exact(const double* a, const double* b, const double* c,
+                                  const double* d, Work work) {
   const detail::LiftedRows R{{a, b, c, d, nullptr}, {0.0, 0.0, 0.0, 0.0, 0.0}};
   return detail::orient3d_exact_rows(R, work);
 }
 
-GDEL_HD inline int orient3d(const double* a, const double* b, const double* c, const double* d,
-                            double* work) {
+template <class Work>
+GDEL_HD int orient3d(const double* a, const double* b, const double* c, const double* d,
+                            Work work) {
   const int s = orient3d_filter(a, b, c, d);
   return s != kUncertain ? s : orient3d_exact(a, b, c, d, work);
 }
 
 // Never 0; ia..id: distinct original indices.
-GDEL_HD inline int orient3d_sos(const double* a, const double* b, const double* c,
+template <class Work>
+GDEL_HD int orient3d_sos(const double* a, const double* b, const double* c,
                                 const double* d, std::int64_t ia, std::int64_t ib,
-                                std::int64_t ic, std::int64_t id, double* work) {
+                                std::int64_t ic, std::int64_t id, Work work) {
   const int s = orient3d(a, b, c, d, work);
   if (s != 0) return s;
-  std::int64_t idx[4] = {ia, ib, ic, id};
-  int perm[4] = {0, 1, 2, 3};
-  const int swaps = detail::sort_network<4>(idx, perm);
-  assert(idx[0] != idx[1] && idx[1] != idx[2] && idx[2] != idx[3]);
   const double* p[4] = {a, b, c, d};
-  detail::LiftedRows R{{p[perm[0]], p[perm[1]], p[perm[2]], p[perm[3]], nullptr},
-                       {0.0, 0.0, 0.0, 0.0, 0.0}};
-  const int v = detail::sos_walk(R, false, false, work);  // perturbed det4 of sorted rows
-  return (swaps & 1) ? v : -v;                            // orient3d = -det4(original)
+  const std::int64_t ids[4] = {ia, ib, ic, id};
+  detail::LiftedRows R;
+  const int swaps = detail::sorted_rows<4>(p, nullptr, ids, false, R);
+  const int v = detail::sos_walk<4>(R, false, work);  // perturbed det4 of sorted rows
+  return (swaps & 1) ? v : detail::negate_sign(v);    // orient3d = -det4(original)
 }
 
 // ---------------------------------------------------------------------------------------
@@ -343,22 +408,25 @@ GDEL_HD inline int orient3d_sos(const double* a, const double* b, const double* 
 // ---------------------------------------------------------------------------------------
 
 // Exact insphere sign; work: kInsphereWork doubles.
-GDEL_HD inline int insphere_exact(const double* a, const double* b, const double* c,
-                                  const double* d, const double* e, double* work) {
+template <class Work>
+GDEL_HD int insphere_exact(const double* a, const double* b, const double* c,
+                                  const double* d, const double* e, Work work) {
   const detail::LiftedRows R{{a, b, c, d, e}, {0.0, 0.0, 0.0, 0.0, 0.0}};
   return detail::lifted_exact_rows(R, false, work);
 }
 
-GDEL_HD inline int insphere(const double* a, const double* b, const double* c, const double* d,
-                            const double* e, double* work) {
+template <class Work>
+GDEL_HD int insphere(const double* a, const double* b, const double* c, const double* d,
+                            const double* e, Work work) {
   const int s = insphere_filter(a, b, c, d, e);
   return s != kUncertain ? s : insphere_exact(a, b, c, d, e, work);
 }
 
-GDEL_HD inline int insphere_sos(const double* a, const double* b, const double* c,
+template <class Work>
+GDEL_HD int insphere_sos(const double* a, const double* b, const double* c,
                                 const double* d, const double* e, std::int64_t ia,
                                 std::int64_t ib, std::int64_t ic, std::int64_t id,
-                                std::int64_t ie, double* work) {
+                                std::int64_t ie, Work work) {
   const int s = insphere(a, b, c, d, e, work);
   if (s != 0) return s;
   const double* p[5] = {a, b, c, d, e};
@@ -366,10 +434,11 @@ GDEL_HD inline int insphere_sos(const double* a, const double* b, const double* 
   return detail::lifted_sos_degenerate(p, nullptr, ids, false, work);
 }
 
-GDEL_HD inline int insphere_lift_sos(const double* a, const double* b, const double* c,
+template <class Work>
+GDEL_HD int insphere_lift_sos(const double* a, const double* b, const double* c,
                                      const double* d, const double* e, std::int64_t ia,
                                      std::int64_t ib, std::int64_t ic, std::int64_t id,
-                                     std::int64_t ie, double* work) {
+                                     std::int64_t ie, Work work) {
   const int s = insphere(a, b, c, d, e, work);
   if (s != 0) return s;
   const double* p[5] = {a, b, c, d, e};
@@ -382,24 +451,27 @@ GDEL_HD inline int insphere_lift_sos(const double* a, const double* b, const dou
 // ---------------------------------------------------------------------------------------
 
 // Exact power-test sign; work: kPowerWork doubles.
-GDEL_HD inline int power_exact(const double* a, const double* b, const double* c, const double* d,
+template <class Work>
+GDEL_HD int power_exact(const double* a, const double* b, const double* c, const double* d,
                                const double* e, double wa, double wb, double wc, double wd,
-                               double we, double* work) {
+                               double we, Work work) {
   const detail::LiftedRows R{{a, b, c, d, e}, {wa, wb, wc, wd, we}};
   return detail::lifted_exact_rows(R, true, work);
 }
 
-GDEL_HD inline int power(const double* a, const double* b, const double* c, const double* d,
+template <class Work>
+GDEL_HD int power(const double* a, const double* b, const double* c, const double* d,
                          const double* e, double wa, double wb, double wc, double wd, double we,
-                         double* work) {
+                         Work work) {
   const int s = power_filter(a, b, c, d, e, wa, wb, wc, wd, we);
   return s != kUncertain ? s : power_exact(a, b, c, d, e, wa, wb, wc, wd, we, work);
 }
 
-GDEL_HD inline int power_sos(const double* a, const double* b, const double* c, const double* d,
+template <class Work>
+GDEL_HD int power_sos(const double* a, const double* b, const double* c, const double* d,
                              const double* e, double wa, double wb, double wc, double wd,
                              double we, std::int64_t ia, std::int64_t ib, std::int64_t ic,
-                             std::int64_t id, std::int64_t ie, double* work) {
+                             std::int64_t id, std::int64_t ie, Work work) {
   const int s = power(a, b, c, d, e, wa, wb, wc, wd, we, work);
   if (s != 0) return s;
   const double* p[5] = {a, b, c, d, e};
@@ -408,11 +480,12 @@ GDEL_HD inline int power_sos(const double* a, const double* b, const double* c, 
   return detail::lifted_sos_degenerate(p, w, ids, true, work);
 }
 
-GDEL_HD inline int power_lift_sos(const double* a, const double* b, const double* c,
+template <class Work>
+GDEL_HD int power_lift_sos(const double* a, const double* b, const double* c,
                                   const double* d, const double* e, double wa, double wb,
                                   double wc, double wd, double we, std::int64_t ia,
                                   std::int64_t ib, std::int64_t ic, std::int64_t id,
-                                  std::int64_t ie, double* work) {
+                                  std::int64_t ie, Work work) {
   const int s = power(a, b, c, d, e, wa, wb, wc, wd, we, work);
   if (s != 0) return s;
   const double* p[5] = {a, b, c, d, e};

@@ -40,32 +40,42 @@ inline constexpr std::int64_t kUncountedListMax = std::int64_t(1) << 22;
 // caps the threads (and so the scratch) on the CUDA backend, where they stride over the
 // items; the CPU backend's team is the cap there. block: the CUDA blocks' threads (a few
 // hundred costly items spread over more SMs in smaller blocks); not used on the CPU.
-template <class F>
-void for_each_with_scratch(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false,
-                           const std::int64_t* count = nullptr, std::int64_t /*max_threads*/ = -1,
-                           int /*block*/ = 64) {
+// The scratch-free form is its own kernel on the CUDA backend, in which work is the
+// constant nullptr: inlined into it, the exact predicates' scratch paths (expansions, the
+// per-minor SoS walks) are dead code and drop out, and with them their registers and stack
+// (geom's exact forms decide in the integer stage or answer kUncertain given nullptr;
+// bench/RESULTS.md, session 42). detail::scratch_pass<Free> is the one launch of each.
+namespace detail {
+template <bool Free, class F>
+void scratch_pass(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, const std::int64_t* count,
+                  std::int64_t /*max_threads*/, int /*block*/) {
   if (count && *count < n) n = *count;
   if (n <= 0) return;
 #pragma omp parallel if (n >= 64)  // exact items are costly: a team pays off early
   {
-    std::vector<double> work(scratch_free ? 0 : work_doubles);
-    double* wp = scratch_free ? nullptr : work.data();
+    std::vector<double> work(Free ? 0 : work_doubles);
 #pragma omp for schedule(dynamic, 64)
-    for (std::int64_t k = 0; k < n; ++k) f(k, wp);
+    for (std::int64_t k = 0; k < n; ++k) {
+      if constexpr (Free) f(k, nullptr);
+      else f(k, work.data());
+    }
   }
 }
+}  // namespace detail
 
 #if defined(__CUDACC__)
 namespace detail {
-// work = nullptr when scratch is (the scratch-free form).
-template <class F>
+// Free: work is the constant nullptr (the scratch-free form), else the thread's slice.
+template <bool Free, class F>
 __global__ void scratch_kernel(std::int64_t n, const std::int64_t* count, double* scratch, std::size_t work_doubles,
                                F f) {
   if (count && *count < n) n = *count;
   const std::int64_t tid = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x;
   const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
-  double* work = scratch ? scratch + tid * work_doubles : nullptr;
-  for (std::int64_t k = tid; k < n; k += stride) f(k, work);
+  for (std::int64_t k = tid; k < n; k += stride) {
+    if constexpr (Free) f(k, nullptr);
+    else f(k, scratch + tid * work_doubles);
+  }
 }
 inline std::int64_t env_per_sm(const char* name, std::int64_t dflt) {
   const char* e = std::getenv(name);
@@ -87,19 +97,28 @@ inline std::int64_t exact_threads(const Context<Cuda>& c, std::int64_t n, bool s
   return n < cap ? n : cap;
 }
 
-template <class F>
-void for_each_with_scratch(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false,
-                           const std::int64_t* count = nullptr, std::int64_t max_threads = -1, int block = 64) {
+namespace detail {
+template <bool Free, class F>
+void scratch_pass(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f, const std::int64_t* count,
+                  std::int64_t max_threads, int block) {
   if (n <= 0) return;
-  std::int64_t want = exact_threads(c, n, scratch_free);
+  std::int64_t want = exact_threads(c, n, Free);
   if (max_threads > 0 && max_threads < want) want = max_threads;
   std::int64_t threads = (want + block - 1) / block * block;
-  Buffer<double, Cuda> scratch(c, scratch_free ? 0 : static_cast<std::size_t>(threads) * work_doubles);
-  detail::scratch_kernel<<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(
-      n, count, scratch_free ? nullptr : scratch.data(), work_doubles, f);
+  Buffer<double, Cuda> scratch(c, Free ? 0 : static_cast<std::size_t>(threads) * work_doubles);
+  scratch_kernel<Free><<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(n, count, scratch.data(),
+                                                                                       work_doubles, f);
   GDEL_CUDA_CHECK_LAUNCH("for_each_with_scratch");
 }
+}  // namespace detail
 #endif
+
+template <class B, class F>
+void for_each_with_scratch(Context<B>& ctx, std::int64_t n, std::size_t work_doubles, F f, bool scratch_free = false,
+                           const std::int64_t* count = nullptr, std::int64_t max_threads = -1, int block = 64) {
+  if (scratch_free) detail::scratch_pass<true>(ctx, n, work_doubles, f, count, max_threads, block);
+  else detail::scratch_pass<false>(ctx, n, work_doubles, f, count, max_threads, block);
+}
 
 namespace detail {
 // One path for both forms: the undecided items' list, its length on the backend (cnt[0]),
@@ -127,24 +146,24 @@ std::int64_t exact_after_fast(Context<B>& ctx, std::int64_t n, const std::int8_t
   }
   if constexpr (Tiers) {  // (exact's return type is not asked for: nvcc's device lambdas hide it from host code)
     if (tiered) {
-      for_each_with_scratch(
-          ctx, bound, 0, [=] GDEL_LAMBDA(std::int64_t k, double* work) {
+      scratch_pass</*Free=*/true>(
+          ctx, bound, 0, [=] GDEL_LAMBDA(std::int64_t k, auto work) {
             if (exact(lp[k], work)) lp[k] = -1;
           },
-          /*scratch_free=*/true, cp);
+          cp, -1, 64);
       Buffer<std::int64_t, B> rest(ctx, static_cast<std::size_t>(bound));
       std::int64_t* rp = rest.data();
       select_indices_to(ctx, static_cast<std::size_t>(bound), rp, cp + 1,
                         [=] GDEL_LAMBDA(std::int64_t k) { return k < cp[0] && lp[k] >= 0; });
-      for_each_with_scratch(
-          ctx, bound, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[rp[k]], work); }, false,
-          cp + 1, max_threads);
+      scratch_pass<false>(
+          ctx, bound, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[rp[k]], work); },
+          cp + 1, max_threads, 64);
     }
   }
   if (!Tiers || !tiered)
-    for_each_with_scratch(
-        ctx, bound, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[k], work); }, false, cp,
-        max_threads);
+    scratch_pass<false>(
+        ctx, bound, work_doubles, [=] GDEL_LAMBDA(std::int64_t k, double* work) { exact(lp[k], work); }, cp,
+        max_threads, 64);
   if (!tally) return bound;
   parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { *tally += cp[0]; });
   return 0;

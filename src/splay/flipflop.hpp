@@ -36,9 +36,9 @@ inline constexpr std::uint8_t kTriStacked0 = 32;
 // success returns true with the star compact in [0, count), every state kTriNew, every
 // slot past count kTriFree; on failure the contents of T and S are unspecified (the
 // caller rebuilds; it must clear S).
-template <class WorkingSet, class Record>
+template <class WorkingSet, class Record, class Work>
 GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap,
-                           vid_t s, std::int32_t nws, WorkingSet ws, Record record, double* work,
+                           vid_t s, std::int32_t nws, WorkingSet ws, Record record, Work work,
                            std::int64_t step_cap = -1) {
   const std::int32_t c0 = count;
   if (c0 < 4) return false;

@@ -68,8 +68,9 @@ GDEL_HD inline bool sorted_contains(const U64* a, I64 n, U64 k) { return sorted_
 // (s, x) of every vertex x that left the star, and (s, q) if q drowned. Running out of
 // room or a broken star sets *err. Returns star_insert's result (kStarDead: weighted
 // points only; the caller marks the star dead and stops inserting into it).
-GDEL_HD inline int insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count,
-                                     std::int32_t cap, vid_t s, vid_t q, double* work, U64* out, I64& k, I64 kend,
+template <class Work>
+GDEL_HD int insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count,
+                                     std::int32_t cap, vid_t s, vid_t q, Work work, U64* out, I64& k, I64 kend,
                                      std::int32_t* err, std::int32_t* nonpos = nullptr) {
   auto record = [&](vid_t x) {
     if (k < kend) out[k++] = pair_key(s, x);
@@ -84,8 +85,9 @@ GDEL_HD inline int insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S,
 // One star of Splayer::build_stars: the 4-simplex of the first four points of ov, then
 // beneath-beyond insertion of the others (∞ first, nearest first), gone pairs recorded in
 // gp[*gk, gend). Host and device (the CUDA backend builds huge stars on the host).
-GDEL_HD inline void build_one_star(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
-                                   const vid_t* ov, I64 len, double* work, U64* gp, I64& gk, I64 gend,
+template <class Work>
+GDEL_HD void build_one_star(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
+                                   const vid_t* ov, I64 len, Work work, U64* gp, I64& gk, I64 gend,
                                    std::int32_t* err, vid_t* killer, std::int32_t* count_out) {
   if (len < 4) {
     *err = 7;
@@ -120,8 +122,9 @@ struct KeyedSet {
 // (flipflop.hpp); if that gives up, the seed is discarded and the star is built by
 // build_one_star. keys: the working set as sorted pair keys; ov: the same vertices in
 // build order. Returns 1 if Flip-Flop made the star, 0 if it was rebuilt.
-GDEL_HD inline int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
-                                const U64* keys, const vid_t* ov, I64 len, std::int32_t seeded, double* work, U64* gp,
+template <class Work>
+GDEL_HD int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
+                                const U64* keys, const vid_t* ov, I64 len, std::int32_t seeded, Work work, U64* gp,
                                 I64& gk, I64 gend, std::int32_t* err, vid_t* killer, std::int32_t* count_out,
                                 I64 step_cap = -1) {
   if (seeded >= 4 && !g.w) {  // (weighted stars may die: no Flip-Flop for them)
@@ -400,7 +403,7 @@ class Splayer {
     HostJobs hjobs;
     if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov, lp, sdp);
     ss_.host_built += static_cast<I64>(huge.size());
-    par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, double* work) {
+    par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, auto work) {
       const I64 s = s0 + j;
       const I64 a = lhp[j], b = lhp[j + 1];
       up[j] = 0;
@@ -868,7 +871,7 @@ class Splayer {
     const flip::Geo g = g_;
     Buffer<I64, B> bad(ctx_, static_cast<std::size_t>(nst_));
     I64* bp = bad.data();
-    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 s, double* work) {
+    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 s, auto work) {
       const Tri* T = sv.tri + sv.begin[s];
       I64 c = 0;
       if (sv.dead(s)) {
@@ -990,7 +993,7 @@ class Splayer {
       return static_cast<I64>(cnt[so[key_target(rp[hp[j]])]]);
     });
     if (!huge.empty()) ijobs = insert_jobs(huge, req, heads, static_cast<I64>(nh), room);
-    par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, double* work) {
+    par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, auto work) {
       const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
       const vid_t sv_vert = key_target(rp[a]);
       const std::int32_t s = so[sv_vert];
@@ -1028,7 +1031,7 @@ class Splayer {
     std::int32_t* ep = error_.data();
     Buffer<I64, B> fresh(ctx_, static_cast<std::size_t>(nst_));
     I64* fp = fresh.data();
-    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 s, double* work) {
+    par::for_each_with_scratch(ctx_, nst_, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 s, auto work) {
       fp[s] = 0;
       if (!sv.dead(s) || sv.cert[5 * s] >= 0) return;
       fp[s] = 1;
@@ -1130,7 +1133,7 @@ class Splayer {
     std::int32_t* ep = error_.data();
     Buffer<vid_t, B> pf(ctx_, static_cast<std::size_t>(4 * n));
     vid_t* pp = pf.data();
-    par::for_each_with_scratch(ctx_, n, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 i, double* work) {
+    par::for_each_with_scratch(ctx_, n, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 i, auto work) {
       const vid_t s = key_target(gp[i]), v = key_vertex(gp[i]);
       const std::int32_t st = so[s];
       vid_t out[4];

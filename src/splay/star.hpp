@@ -36,11 +36,13 @@ GDEL_HD inline std::uint8_t tri_kind(std::uint8_t s) { return s & kTriKind; }
 GDEL_HD inline void set_kind(std::uint8_t& s, std::uint8_t kind) { s = std::uint8_t((s & ~kTriKind) | kind); }
 
 // 3-D orientation of (a, b, c, d) with ∞ embedded as in gFlip3D (Geo::orient): never 0.
-GDEL_HD inline int orient_any(const flip::Geo& g, vid_t a, vid_t b, vid_t c, vid_t d, double* work) {
+template <class Work>
+GDEL_HD int orient_any(const flip::Geo& g, vid_t a, vid_t b, vid_t c, vid_t d, Work work) {
   const int r = g.orient_fast(a, b, c, d);
   return r != par::kUndecided ? r : g.orient_exact(a, b, c, d, work);
 }
-GDEL_HD inline std::uint8_t positivity_flag(const flip::Geo& g, vid_t s, const Tri& t, double* work) {
+template <class Work>
+GDEL_HD std::uint8_t positivity_flag(const flip::Geo& g, vid_t s, const Tri& t, Work work) {
   return orient_any(g, s, t.v[0], t.v[1], t.v[2], work) > 0 ? std::uint8_t(0) : std::uint8_t(kTriNonPositive);
 }
 
@@ -48,8 +50,9 @@ GDEL_HD inline std::uint8_t positivity_flag(const flip::Geo& g, vid_t s, const T
 // the triangle whose 3-D cone from s contains q's direction, or -1 after `count` steps.
 // Meaningful when every tet of the star is positive in the 3-D embedding: the star is
 // then the projection of a convex lifted star, a partition of the directions around s.
-GDEL_HD inline std::int32_t star_locate(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t q,
-                                        std::int32_t t, double* work) {
+template <class Work>
+GDEL_HD std::int32_t star_locate(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t q,
+                                        std::int32_t t, Work work) {
   for (std::int32_t step = 0; step <= count; ++step) {
     bool moved = false;
     for (int k = 0; k < 3 && !moved; ++k) {
@@ -80,7 +83,8 @@ GDEL_HD inline bool star_has(const Tri* T, std::int32_t count, vid_t x) {
 }
 
 // Beyond test of q against triangle i of the star of s (filter first, then exact).
-GDEL_HD inline int star_side(const flip::Geo& g, const Tri& t, vid_t s, vid_t q, double* work) {
+template <class Work>
+GDEL_HD int star_side(const flip::Geo& g, const Tri& t, vid_t s, vid_t q, Work work) {
   const vid_t v[5] = {s, t.v[0], t.v[1], t.v[2], q};
   return g.orient4_any(v, work);
 }
@@ -100,8 +104,9 @@ GDEL_HD inline void link_by_edges(Tri* T, int k) {
 }
 
 // The star of s in the 4-simplex (s, a, b, c, d): the 4 facets through s.
-GDEL_HD inline void star_simplex(const flip::Geo& g, Tri* T, std::uint8_t* S, vid_t s, const vid_t* abcd,
-                                 std::uint8_t state, double* work) {
+template <class Work>
+GDEL_HD void star_simplex(const flip::Geo& g, Tri* T, std::uint8_t* S, vid_t s, const vid_t* abcd,
+                                 std::uint8_t state, Work work) {
   const vid_t v[5] = {s, abcd[0], abcd[1], abcd[2], abcd[3]};
   const bool flip = g.orient4_any(v, work) > 0;  // d beyond (a,b,c): reverse every face
   for (int i = 0; i < 4; ++i) {
@@ -134,9 +139,9 @@ GDEL_HD inline void star_move(Tri* T, std::uint8_t* S, std::int32_t from, std::i
 // coplanar hull face), and on a GPU every pass over it costs a dependent load per slot.
 // `nonpos` (optional, in/out): the number of triangles flagged kTriNonPositive, kept by a
 // caller that inserts many points into one star; without it that count is a scan.
-template <class Gone>
+template <class Gone, class Work>
 GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap, vid_t s,
-                        vid_t q, double* work, Gone gone, std::int32_t hint = 0, std::int32_t* nonpos = nullptr) {
+                        vid_t q, Work work, Gone gone, std::int32_t hint = 0, std::int32_t* nonpos = nullptr) {
   std::int32_t np = 0;
   if (nonpos) np = *nonpos;
   else
@@ -319,8 +324,9 @@ GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_
 // point 2s - k against the planes (s, e, ti, tj) is testing k with the sign reversed (the
 // 5x5 determinant is linear in its last row, and the row of s repeats), under the same
 // perturbation.
-GDEL_HD inline bool star_proof(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t v, vid_t* out,
-                               double* work, bool reflect = false) {
+template <class Work>
+GDEL_HD bool star_proof(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t v, vid_t* out,
+                               Work work, bool reflect = false) {
   if (count <= 0) return false;
   const vid_t e = T[0].v[0];
   for (std::int32_t i = 0; i < count; ++i) {

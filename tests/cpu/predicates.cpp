@@ -91,7 +91,8 @@ int parity(const int* perm, int n) {
 
 enum class Pred { O3Sos, InsSos, InsLift, PowSos, PowLift };
 
-int call(Pred p, const Case& k, double* w) {
+template <class Work>
+int call(Pred p, const Case& k, Work w) {
   switch (p) {
     case Pred::O3Sos:
       return orient3d_sos(k.p[0], k.p[1], k.p[2], k.p[3], k.id[0], k.id[1], k.id[2], k.id[3], w);
@@ -453,13 +454,13 @@ TEST(Predicates, RandomCasesMatchGmp) {
 TEST(Predicates, DegenerateCasesMatchGmpAndSosIsConsistent) {
   const long n = 200000;
   Failures fail;
-  std::atomic<long> zeros_o3{0}, zeros_ins{0}, zeros_pow{0}, em_checked{0}, lift_deep{0};
+  std::atomic<long> zeros_o3{0}, zeros_ins{0}, zeros_pow{0}, em_checked{0}, lift_deep{0}, no_scratch_walks{0};
   const auto t0 = std::chrono::steady_clock::now();
   run_parallel(n, [&](int th, long b, long e) {
     Generator g(5000 + th);
     Oracle o;
     std::vector<double> work(kPredicateWork);
-    long z3 = 0, zi = 0, zp = 0, em = 0, deep = 0;
+    long z3 = 0, zi = 0, zp = 0, em = 0, deep = 0, free_walks = 0;
     for (long t = b; t < e; ++t) {
       const Case k = g.degenerate(static_cast<int>(t));
       const double *pa = k.p[0], *pb = k.p[1], *pc = k.p[2], *pd = k.p[3], *pe = k.p[4];
@@ -566,6 +567,42 @@ TEST(Predicates, DegenerateCasesMatchGmpAndSosIsConsistent) {
             call(Pred::InsLift, kt, work.data()) != -li || call(Pred::PowLift, kt, work.data()) != -lp)
           fail.add("transposition " + describe(k, 5));
       }
+      // --- no scratch (work = nullptr): where every point (and weight) is of the integer
+      // stage, all at scale 1 or all at the quarter scale, the same sign as with a scratch
+      // (the SoS walks on detail::IntRows); elsewhere that sign or kUncertain, never another
+      {
+        auto of_stage = [&](int np, bool weighted) {
+          for (const double sc : {1.0, kQuarterScale}) {
+            bool all = true;
+            for (int i = 0; i < np; ++i) all = all && integer_point(k.p[i], weighted ? W[i] : 0.0, sc);
+            if (all) return true;
+          }
+          return false;
+        };
+        const Pred preds[5] = {Pred::O3Sos, Pred::InsSos, Pred::InsLift, Pred::PowSos, Pred::PowLift};
+        const int with[5] = {s3, si, li, sp, lp};
+        const int exact_with[3] = {x3, xi, xp};
+        const int exact_without[3] = {orient3d_exact(pa, pb, pc, pd, nullptr),
+                                      insphere_exact(pa, pb, pc, pd, pe, nullptr),
+                                      power_exact(pa, pb, pc, pd, pe, W[0], W[1], W[2], W[3], W[4], nullptr)};
+        for (int q = 0; q < 5; ++q) {
+          const bool weighted = preds[q] == Pred::PowSos || preds[q] == Pred::PowLift;
+          const bool stage = of_stage(preds[q] == Pred::O3Sos ? 4 : 5, weighted);
+          const int without = call(preds[q], k, nullptr);  // (std::nullptr_t: the scratch-free instances)
+          const int null_work = call(preds[q], k, static_cast<double*>(nullptr));  // (a null double*)
+          if (stage ? without != with[q] : (without != with[q] && without != kUncertain))
+            fail.add("no scratch, predicate " + std::to_string(q) + " " + describe(k, 5));
+          if (null_work != without) fail.add("null scratch, predicate " + std::to_string(q) + " " + describe(k, 5));
+          const int x = q == 0 ? x3 : (weighted ? xp : xi);
+          free_walks += stage && x == 0;
+          if (q == 0 || q == 2 || q == 4) {
+            const int e = q / 2;
+            if (stage ? exact_without[e] != exact_with[e]
+                      : (exact_without[e] != exact_with[e] && exact_without[e] != kUncertain))
+              fail.add("no scratch, exact " + std::to_string(e) + " " + describe(k, 5));
+          }
+        }
+      }
       // --- lifted minors (all masks of 1..3 columns on the first k+1 points)
       if (t % 2 == 0) {
         o.load(k, 5, true);
@@ -584,16 +621,19 @@ TEST(Predicates, DegenerateCasesMatchGmpAndSosIsConsistent) {
     zeros_pow += zp;
     em_checked += em;
     lift_deep += deep;
+    no_scratch_walks += free_walks;
   });
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("[degenerate] %ld cases, %.1f s; exact zeros: orient3d %ld, insphere %ld, power %ld; "
-              "E-M brute-force checks %ld; lift-SoS E-M fallbacks (5 coplanar, power) %ld\n",
+              "E-M brute-force checks %ld; lift-SoS E-M fallbacks (5 coplanar, power) %ld; "
+              "SoS walks without a scratch %ld\n",
               n, sec, zeros_o3.load(), zeros_ins.load(), zeros_pow.load(), em_checked.load(),
-              lift_deep.load());
+              lift_deep.load(), no_scratch_walks.load());
   EXPECT_GT(zeros_o3.load(), n / 10);
   EXPECT_GT(zeros_ins.load(), n / 10);
   EXPECT_GT(zeros_pow.load(), n / 10);
   EXPECT_GT(lift_deep.load(), 100);
+  EXPECT_GT(no_scratch_walks.load(), n / 10);
   fail.report("degenerate");
 }
 

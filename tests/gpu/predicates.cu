@@ -37,7 +37,8 @@ struct Result {
   int minor_exact[kMasks];
 };
 
-GDEL_HD void evaluate(const Case& k, Result& r, double* work) {
+template <class Work>  // double* (a scratch) or std::nullptr_t (none: the scratch-free instances)
+GDEL_HD void evaluate(const Case& k, Result& r, Work work) {
   const double *a = k.p[0], *b = k.p[1], *c = k.p[2], *d = k.p[3], *e = k.p[4];
   const double* w = k.w;
   const std::int64_t* id = k.id;
@@ -54,9 +55,10 @@ GDEL_HD void evaluate(const Case& k, Result& r, double* work) {
   r.pwl = power_lift_sos(a, b, c, d, e, w[0], w[1], w[2], w[3], w[4], id[0], id[1], id[2], id[3],
                          id[4], work);
   const double* pts[5] = {a, b, c, d, e};
+  double* mw = work;  // (the minors' API takes a double*: null without a scratch)
   for (int m = 0; m < kMasks; ++m) {
-    r.minor[m] = lifted_minor(pts, w, static_cast<unsigned>(m + 1), work);
-    r.minor_exact[m] = lifted_minor_exact(pts, w, static_cast<unsigned>(m + 1), work);
+    r.minor[m] = lifted_minor(pts, w, static_cast<unsigned>(m + 1), mw);
+    r.minor_exact[m] = lifted_minor_exact(pts, w, static_cast<unsigned>(m + 1), mw);
   }
 }
 
@@ -64,6 +66,24 @@ __global__ void evaluate_kernel(const Case* cases, int n, Result* out, double* s
   const int tid = blockIdx.x * blockDim.x + threadIdx.x;
   double* work = scratch + static_cast<std::size_t>(tid) * kPredicateWork;
   for (int i = tid; i < n; i += gridDim.x * blockDim.x) evaluate(cases[i], out[i], work);
+}
+
+// The same without a scratch: work the constant nullptr, as in the scratch-free exact
+// passes (par::for_each_with_scratch), where the expansions and per-minor walks drop out.
+__global__ void evaluate_free_kernel(const Case* cases, int n, Result* out) {
+  const int tid = blockIdx.x * blockDim.x + threadIdx.x;
+  for (int i = tid; i < n; i += gridDim.x * blockDim.x) evaluate(cases[i], out[i], nullptr);
+}
+
+// Whether the first np points (and weights when weighted) are all of the integer stage at
+// scale 1 or all at the quarter scale: then no evaluation needs a scratch.
+bool of_stage(const Case& k, int np, bool weighted) {
+  for (const double sc : {1.0, kQuarterScale}) {
+    bool all = true;
+    for (int i = 0; i < np; ++i) all = all && integer_point(k.p[i], weighted ? k.w[i] : 0.0, sc);
+    if (all) return true;
+  }
+  return false;
 }
 
 // Contraction regression on the device: two_product of given pairs, and orient3d of a
@@ -132,12 +152,16 @@ TEST(GpuPredicates, MatchGmpAndHost) {
   CUDA_OK(cudaGetLastError());
   CUDA_OK(cudaDeviceSynchronize());
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::vector<Result> out(n);
+  std::vector<Result> out(n), free_out(n);
   CUDA_OK(cudaMemcpy(out.data(), d_out.ptr, sizeof(Result) * n, cudaMemcpyDeviceToHost));
+  evaluate_free_kernel<<<blocks, threads>>>(d_cases.ptr, n, d_out.ptr);
+  CUDA_OK(cudaGetLastError());
+  CUDA_OK(cudaDeviceSynchronize());
+  CUDA_OK(cudaMemcpy(free_out.data(), d_out.ptr, sizeof(Result) * n, cudaMemcpyDeviceToHost));
 
-  long bad = 0, zero_sos = 0, brute = 0;
+  long bad = 0, zero_sos = 0, brute = 0, free_decided = 0;
   // The GMP checks run on all host threads (one oracle and scratch per thread).
-#pragma omp parallel reduction(+ : bad, zero_sos, brute)
+#pragma omp parallel reduction(+ : bad, zero_sos, brute, free_decided)
   {
     Oracle o;
     std::vector<double> work(kPredicateWork);
@@ -153,6 +177,24 @@ TEST(GpuPredicates, MatchGmpAndHost) {
       Result h;
       evaluate(k, h, work.data());  // host implementation: identical signs expected
       if (std::memcmp(&h, &r, sizeof(Result)) != 0) fail(i, "device != host");
+      // without a scratch: the same signs where the points are of the integer stage (every
+      // orient3d-only result needs only the first four), elsewhere those or kUncertain
+      {
+        const Result& f = free_out[i];
+        Result hf;
+        evaluate(k, hf, nullptr);
+        if (std::memcmp(&hf, &f, sizeof(Result)) != 0) fail(i, "device != host without a scratch");
+        const bool s4 = of_stage(k, 4, false), s5 = of_stage(k, 5, false), s5w = of_stage(k, 5, true);
+        auto same = [&](int a, int b, bool stage) { return stage ? a == b : (a == b || a == kUncertain); };
+        bool ok = same(f.o3, r.o3, s4) && same(f.o3x, r.o3x, s4) && same(f.o3s, r.o3s, s4) &&
+                  same(f.in, r.in, s5) && same(f.inx, r.inx, s5) && same(f.ins, r.ins, s5) &&
+                  same(f.inl, r.inl, s5) && same(f.pw, r.pw, s5w) && same(f.pwx, r.pwx, s5w) &&
+                  same(f.pws, r.pws, s5w) && same(f.pwl, r.pwl, s5w);
+        for (int m = 0; m < kMasks; ++m)
+          ok = ok && same(f.minor[m], r.minor[m], s5w) && same(f.minor_exact[m], r.minor_exact[m], s5w);
+        if (!ok) fail(i, "without a scratch");
+        free_decided += s5w && f.pwl != kUncertain && f.inl != kUncertain;
+      }
       o.load(k, 4, false);
       const int x3 = o.orient3d();
       if (r.o3 != x3 || r.o3x != x3) fail(i, "orient3d");
@@ -178,7 +220,9 @@ TEST(GpuPredicates, MatchGmpAndHost) {
     }
   }
   std::printf("[gpu] %d cases (%d random, %d degenerate, %d at the integer stage's narrow limit) in %.2f s on "
-              "the device; %ld brute-force SoS checks\n", n, n_random, n_degenerate, n_narrow, sec, brute);
+              "the device; %ld brute-force SoS checks; %ld integer cases decided without a scratch\n", n, n_random,
+              n_degenerate, n_narrow, sec, brute, free_decided);
+  EXPECT_GT(free_decided, n_degenerate / 10);
   EXPECT_EQ(bad, 0);
   EXPECT_EQ(zero_sos, 0);
 }
