@@ -1118,17 +1118,22 @@ case "$plan" in
           # code) against gdel-bench, as s41a
     oldnew s42a
     ;;
-  s42b)  # session 42: the GPU tests that decide through the new walks and kernels: predicates against GMP
-          # (with and without a scratch), the flips, the repair
+  s42b)  # session 42: the GPU tests of the predicates (against GMP, with and without a scratch) and of the
+          # flips, whose scratch-free passes are the new instances
     step predicates 200 "$tbin/gpu_predicates"
     step gflip3d 150 "$tbin/gpu_gflip3d"
-    step gdel3d 200 "$tbin/gpu_gdel3d"
     ;;
-  s42c)  # session 42: gReg3D (power), gStar4D, hostile input; the other generators (new binary)
+  s42c)  # session 42: the repair (star splaying engine, its scratch-free instances), gReg3D (power), gStar4D,
+          # hostile input
+    step gdel3d 200 "$tbin/gpu_gdel3d"
     step greg3d 150 "$tbin/gpu_greg3d"
     step gstar4d 150 "$tbin/gpu_gstar4d"
     step hostile 200 "$tbin/gpu_hostile"
-    bench s42c_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ;;
+  s42d)  # session 42: the splay engine's functions out of line in device code (GDEL_STAR_NOINLINE): old
+          # against new as s42a; then the other generators (new binary)
+    oldnew s42d
+    bench s42d_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

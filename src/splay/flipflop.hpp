@@ -37,9 +37,9 @@ inline constexpr std::uint8_t kTriStacked0 = 32;
 // slot past count kTriFree; on failure the contents of T and S are unspecified (the
 // caller rebuilds; it must clear S).
 template <class WorkingSet, class Record, class Work>
-GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap,
-                           vid_t s, std::int32_t nws, WorkingSet ws, Record record, Work work,
-                           std::int64_t step_cap = -1) {
+GDEL_STAR_NOINLINE GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count,
+                                              std::int32_t cap, vid_t s, std::int32_t nws, WorkingSet ws,
+                                              Record record, Work work, std::int64_t step_cap = -1) {
   const std::int32_t c0 = count;
   if (c0 < 4) return false;
   // scratch past the live triangles: the edge stack (3 * c0 ints: one entry per

@@ -14,6 +14,16 @@
 #include "flip/geo.hpp"
 #include "mesh/conventions.hpp"
 
+// Out of line in device code only (the host compiler keeps its own choice): the engine's
+// large per-star functions, inlined into a kernel capped at 255 registers, make it spill
+// (the scratch-free star builds: 9.5 KB of spill stores a thread, 2x the time on the
+// sphere; bench/RESULTS.md, session 42). Their scratch instances were out of line anyway.
+#if defined(__CUDA_ARCH__)
+#define GDEL_STAR_NOINLINE __noinline__
+#else
+#define GDEL_STAR_NOINLINE
+#endif
+
 namespace gdel::splay {
 
 struct Tri {
@@ -42,7 +52,7 @@ GDEL_HD int orient_any(const flip::Geo& g, vid_t a, vid_t b, vid_t c, vid_t d, W
   return r != par::kUndecided ? r : g.orient_exact(a, b, c, d, work);
 }
 template <class Work>
-GDEL_HD std::uint8_t positivity_flag(const flip::Geo& g, vid_t s, const Tri& t, Work work) {
+GDEL_STAR_NOINLINE GDEL_HD std::uint8_t positivity_flag(const flip::Geo& g, vid_t s, const Tri& t, Work work) {
   return orient_any(g, s, t.v[0], t.v[1], t.v[2], work) > 0 ? std::uint8_t(0) : std::uint8_t(kTriNonPositive);
 }
 
@@ -84,7 +94,7 @@ GDEL_HD inline bool star_has(const Tri* T, std::int32_t count, vid_t x) {
 
 // Beyond test of q against triangle i of the star of s (filter first, then exact).
 template <class Work>
-GDEL_HD int star_side(const flip::Geo& g, const Tri& t, vid_t s, vid_t q, Work work) {
+GDEL_STAR_NOINLINE GDEL_HD int star_side(const flip::Geo& g, const Tri& t, vid_t s, vid_t q, Work work) {
   const vid_t v[5] = {s, t.v[0], t.v[1], t.v[2], q};
   return g.orient4_any(v, work);
 }
@@ -140,8 +150,9 @@ GDEL_HD inline void star_move(Tri* T, std::uint8_t* S, std::int32_t from, std::i
 // `nonpos` (optional, in/out): the number of triangles flagged kTriNonPositive, kept by a
 // caller that inserts many points into one star; without it that count is a scan.
 template <class Gone, class Work>
-GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count, std::int32_t cap, vid_t s,
-                        vid_t q, Work work, Gone gone, std::int32_t hint = 0, std::int32_t* nonpos = nullptr) {
+GDEL_STAR_NOINLINE GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t& count,
+                                           std::int32_t cap, vid_t s, vid_t q, Work work, Gone gone,
+                                           std::int32_t hint = 0, std::int32_t* nonpos = nullptr) {
   std::int32_t np = 0;
   if (nonpos) np = *nonpos;
   else

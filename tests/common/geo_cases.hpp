@@ -25,9 +25,11 @@ namespace gdel::test {
 
 // Per tuple (five vertices v): orient4(v), insphere(v[0..3], v[4]), orient3d(v[0..3]) and
 // the volume sign of v[1..4] by the exact forms, with a scratch or (scratch = false)
-// with work = nullptr.
+// with work = nullptr. Work: double* (a scratch, or null) or std::nullptr_t (the
+// instances without expansions that the library's scratch-free passes run).
 inline constexpr int kTests = 4, kOrient = 2;
-GDEL_HD inline void geo_exact_signs(const flip::Geo& g, const vid_t* v, double* work, std::int8_t* r) {
+template <class Work>
+GDEL_HD void geo_exact_signs(const flip::Geo& g, const vid_t* v, Work work, std::int8_t* r) {
   r[0] = static_cast<std::int8_t>(g.orient4<true>(v, work));
   r[1] = static_cast<std::int8_t>(g.insphere<true>(v, v[4], work));
   r[2] = static_cast<std::int8_t>(g.orient<true>(v[0], v[1], v[2], v[3], work));
@@ -180,13 +182,13 @@ void geo_scratch_free_cases(double unit) {
           tp[t] = 0;
           return true;
         },
-        [=] GDEL_LAMBDA(std::int64_t t, double* work) {
+        [=] GDEL_LAMBDA(std::int64_t t, auto work) {
           std::int8_t s[kTests];
           geo_exact_signs(gi, up + 5 * t, work, s);
           for (int k = 0; k < kTests; ++k)
             if (s[k] == kUndecided) return false;
           for (int k = 0; k < kTests; ++k) rp[kTests * t + k] = s[k];
-          tp[t] = work == nullptr ? 1 : 2;
+          tp[t] = geom::no_scratch(work) ? 1 : 2;
           return true;
         },
         geom::kPredicateWork, tiered, tallied ? tally.data() : nullptr);
@@ -209,7 +211,7 @@ void geo_scratch_free_cases(double unit) {
     std::int8_t* rp = r.data();
     for_each_with_scratch(
         ctx, T, geom::kPredicateWork,
-        [=] GDEL_LAMBDA(std::int64_t t, double* work) { geo_exact_signs(gi, up + 5 * t, work, rp + kTests * t); },
+        [=] GDEL_LAMBDA(std::int64_t t, auto work) { geo_exact_signs(gi, up + 5 * t, work, rp + kTests * t); },
         /*scratch_free=*/true);
     EXPECT_EQ(r.to_host(), exact);
   }
