@@ -1135,6 +1135,11 @@ case "$plan" in
     oldnew s42d
     bench s42d_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ;;
+  s42e)  # session 42: the walks' one evaluator (WalkMinor: orient3d's filter on the first terms, integers
+          # converted at the first minor that needs them): old against new as s42a; the other generators
+    oldnew s42e
+    bench s42e_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

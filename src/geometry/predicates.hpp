@@ -171,36 +171,64 @@ GDEL_HD int sorted_rows(const double* const* p, const double* w, const std::int6
   return swaps;
 }
 
-// The two evaluators of a walk's minors, minor(rows, cols) with bit masks of sorted rows
-// and of columns (kColX..kColH, 1..3 of them): the integer stage on rows converted once
-// (int_minor_sign, when int_rows applies: integer input, every minor on registers), else
-// filter + exact per minor (minor_sign), whose walks run out of line so that the integer
-// walk's kernels do not carry their registers (bench/RESULTS.md, session 42).
-struct RowsMinor {
+// The minors of a walk, minor(rows, cols) with bit masks of the N sorted rows and of the
+// columns (kColX..kColH, 1..3 of them), in three stages:
+//  * x, y, z over four rows (the lift walk's first terms, which decide the ties of points
+//    on a common sphere: -orient3d of those rows): orient3d's filter;
+//  * the integer stage on the rows converted once, at the first minor that needs it
+//    (int_rows / int_minor_sign: integer input, every index fixed at compile time);
+//  * else, with a scratch, filter + exact per minor (minor_sign, out of line); without one
+//    kUncertain, which ends the walk (the signs of all three stages are the same).
+// The std::nullptr_t instance holds no expansions (bench/RESULTS.md, session 42).
+GDEL_NOINLINE GDEL_HD inline int minor_sign_masked(const LiftedRows& R, unsigned rows, unsigned cols, bool weighted,
+                                                   double* work) {
+  int rr[5], k = 0;
+  for (int r = 0; r < 5; ++r)
+    if (rows >> r & 1u) rr[k++] = r;
+  return minor_sign(R, rr, cols, weighted, work);
+}
+template <int N, class Work>
+struct WalkMinor {
   const LiftedRows& R;
   bool weighted;
-  double* work;
-  GDEL_HD int operator()(unsigned rows, unsigned cols) const {
-    int rr[5], k = 0;
-    for (int r = 0; r < 5; ++r)
-      if (rows >> r & 1u) rr[k++] = r;
-    return minor_sign(R, rr, cols, weighted, work);
+  Work work;
+  IntRows Q;
+  int integer = 0;  // Q: 0 not yet converted, 1 converted, -1 not of the integer stage
+  GDEL_HD int operator()(unsigned rows, unsigned cols) {
+    if (cols == (kColX | kColY | kColZ)) {  // the four rows' pointers by selects (fixed indices)
+      const double* p[4] = {nullptr, nullptr, nullptr, nullptr};
+      int k = 0;
+      for (int r = 0; r < 5; ++r) {
+        if (!(rows >> r & 1u)) continue;
+        for (int j = 0; j < 4; ++j)
+          if (k == j) p[j] = R.p[r];
+        ++k;
+      }
+      const int f = orient3d_filter(p[0], p[1], p[2], p[3]);
+      if (f != kUncertain) return -f;  // det[[q, 1]] over x, y, z = -orient3d
+    }
+    if (integer == 0) integer = int_rows<N>(R, N == 5, Q) ? 1 : -1;
+    if (integer > 0) return int_minor_sign(Q, rows, cols);
+    if constexpr (std::is_same_v<Work, std::nullptr_t>) {
+      return kUncertain;
+    } else {
+      if (!work) return kUncertain;
+      return minor_sign_masked(R, rows, cols, weighted, work);
+    }
   }
-};
-struct IntMinor {
-  const IntRows& Q;
-  GDEL_HD int operator()(unsigned rows, unsigned cols) const { return int_minor_sign(Q, rows, cols); }
 };
 
 // Sign of the perturbed raw determinant det[(q, 1)] of the sorted rows, given that its
 // unperturbed value is 0: the first non-zero term of the generated table.
+// kUncertain where a minor is (no scratch, not of the integer stage).
 template <class Minor>
-GDEL_HD int sos_table_walk(bool lifted, const Minor& minor) {
+GDEL_HD int sos_table_walk(bool lifted, Minor& minor) {
   const int n = lifted ? sos::kLifted4Terms : sos::kOrient3Terms;
   for (int t = 0; t < n; ++t) {
     const sos::SosTerm term = lifted ? sos::lifted4_term(t) : sos::orient3_term(t);
     if (term.cols == 0) return term.sign;
     const int s = minor(term.rows, term.cols);
+    if (s == kUncertain) return kUncertain;
     if (s != 0) return term.sign * s;
   }
   assert(false && "SoS table must end with a constant term");
@@ -222,7 +250,7 @@ GDEL_HD int sos_table_walk(bool lifted, const Minor& minor) {
 // any other term loses a column to E or to an e_r): no 4-column evaluator is compiled in
 // (on the GPU that path's registers and stack were the kernels'; RESULTS.md, session 41).
 template <class Minor>
-GDEL_HD int lift_walk(const Minor& minor) {
+GDEL_HD int lift_walk(Minor& minor) {
   // sign of the permutation sigma (rows -> columns)
   auto parity = [](const int* sigma) {
     int inv = 0;
@@ -269,6 +297,7 @@ GDEL_HD int lift_walk(const Minor& minor) {
       const unsigned mask = free_cols | (extra < 5 ? 0u : unsigned(kColH));
       assert((mask & 15u) != 15u);
       const int m = mask == 0 ? 1 : minor(31u & ~all_rows, mask);
+      if (m == kUncertain) return kUncertain;
       if (m != 0) return parity(sigma) * m;
     }
   }
@@ -276,27 +305,13 @@ GDEL_HD int lift_walk(const Minor& minor) {
   return 1;
 }
 
-// The walks through minor_sign, out of line (see RowsMinor).
-GDEL_NOINLINE GDEL_HD inline int sos_walk_rows(const LiftedRows& R, bool lifted, bool weighted, double* work) {
-  return sos_table_walk(lifted, RowsMinor{R, weighted, work});
-}
-GDEL_NOINLINE GDEL_HD inline int lift_walk_rows(const LiftedRows& R, bool weighted, double* work) {
-  return lift_walk(RowsMinor{R, weighted, work});
-}
-
 // Sign of the perturbed det[(q, 1)] of the N sorted rows R (N = 4: orient3d's table, 5:
-// the lifted one) given that its unperturbed value is 0.
-// Given work = nullptr: the integer walk, or kUncertain where it does not apply.
+// the lifted one) given that its unperturbed value is 0; kUncertain without a scratch
+// where the integer stage does not apply.
 template <int N, class Work>
 GDEL_HD int sos_walk(const LiftedRows& R, bool weighted, Work work) {
-  IntRows Q;
-  if (int_rows<N>(R, N == 5, Q)) return sos_table_walk(N == 5, IntMinor{Q});
-  if constexpr (std::is_same_v<Work, std::nullptr_t>) {
-    return kUncertain;
-  } else {
-    if (!work) return kUncertain;
-    return sos_walk_rows(R, N == 5, weighted, work);
-  }
+  WalkMinor<N, Work> minor{R, weighted, work, {}};
+  return sos_table_walk(N == 5, minor);
 }
 
 template <class Work>
@@ -323,26 +338,16 @@ GDEL_HD int lifted_sos_degenerate(const double* const* p, const double* w, const
   return (swaps & 1) ? v : negate_sign(v);       // value = -det5(original order)
 }
 
-// The lifting-first perturbation (lift_walk) given that the exact value is 0; given
-// work = nullptr the integer walk, or kUncertain where it does not apply.
+// The lifting-first perturbation (lift_walk) given that the exact value is 0; kUncertain
+// without a scratch where the integer stage does not apply.
 template <class Work>
 GDEL_HD int lift_sos_degenerate(const double* const* p, const double* w, const std::int64_t* ids, bool weighted,
                                 Work work) {
   LiftedRows R;
   const int swaps = sorted_rows<5>(p, w, ids, weighted, R);
-  IntRows Q;
-  int v;
-  if (int_rows<5>(R, true, Q)) {
-    v = lift_walk(IntMinor{Q});
-  } else {
-    if constexpr (std::is_same_v<Work, std::nullptr_t>) {
-      return kUncertain;
-    } else {
-      if (!work) return kUncertain;
-      v = lift_walk_rows(R, weighted, work);
-    }
-  }
-  return (swaps & 1) ? v : -v;  // value = -det5(original order)
+  WalkMinor<5, Work> minor{R, weighted, work, {}};
+  const int v = lift_walk(minor);
+  return (swaps & 1) ? v : negate_sign(v);  // value = -det5(original order)
 }
 
 }  // namespace detail

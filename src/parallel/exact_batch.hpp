@@ -40,11 +40,12 @@ inline constexpr std::int64_t kUncountedListMax = std::int64_t(1) << 22;
 // caps the threads (and so the scratch) on the CUDA backend, where they stride over the
 // items; the CPU backend's team is the cap there. block: the CUDA blocks' threads (a few
 // hundred costly items spread over more SMs in smaller blocks); not used on the CPU.
-// The scratch-free form is its own kernel on the CUDA backend, in which work is the
-// constant nullptr: inlined into it, the exact predicates' scratch paths (expansions, the
-// per-minor SoS walks) are dead code and drop out, and with them their registers and stack
-// (geom's exact forms decide in the integer stage or answer kUncertain given nullptr;
-// bench/RESULTS.md, session 42). detail::scratch_pass<Free> is the one launch of each.
+// The scratch-free form calls f(k, nullptr), a std::nullptr_t, in a kernel of its own on
+// the CUDA backend: a generic f (`auto work`) there instantiates the exact forms without a
+// scratch (geom's predicates.hpp: no expansions compiled in; they decide in the integer
+// stage or answer kUncertain), with fewer registers and no spills (bench/RESULTS.md,
+// session 42); f(k, double*) still works, with a null pointer. detail::scratch_pass<Free>
+// is the one launch of each form.
 namespace detail {
 template <bool Free, class F>
 void scratch_pass(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, const std::int64_t* count,
