@@ -1140,6 +1140,17 @@ case "$plan" in
     oldnew s42e
     bench s42e_others 90 --dist gaussian,ball,thin_shell --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ;;
+  s42f)  # session 42: the CPU backend on the host's threads, old against new, grid and sphere 10^6 (the same
+          # walks and work types on the host)
+    bench_old s42f_cpu_old 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
+    bench s42f_cpu_new 150 --dist grid,sphere --n 1000000 --methods gdel3d-cpu --repeat 3
+    ;;
+  s42g)  # session 42: the CPU backend on uniform 10^6 (float input: few ties), old against new, twice
+    for r in 1 2; do
+      bench_old "s42g_cpu_old$r" 100 --dist uniform --n 1000000 --methods gdel3d-cpu --repeat 3
+      bench "s42g_cpu_new$r" 100 --dist uniform --n 1000000 --methods gdel3d-cpu --repeat 3
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
