@@ -12,9 +12,9 @@
 // cannot certify a non-zero sign) and an exact form (exact arithmetic, then
 // simulation of simplicity by original input index: never 0). The exact forms take a
 // scratch of geom::kPredicateWork doubles (as Work: double*, or std::nullptr_t for none at
-// compile time, whose instances hold no expansions: geom's predicates.hpp); without one they decide only what
-// the integer stage decides without one (Geo::int_all; or Geo::int_points and no ∞ among
-// the points, whose kernel point K is then not known to be of the stage) and answer
+// compile time, whose instances hold no expansions: geom's predicates.hpp); without one
+// they decide only what the integer stage decides (Geo::int_all; or Geo::int_points and
+// no ∞ among the points, whose kernel point K is then not known to be of the stage) and answer
 // kUndecided otherwise, so that par::fast_then_exact_tiered can try them without a
 // scratch first, and the star splaying engine on integer input runs without one
 // (Geo::int_all, par::for_each_with_scratch's scratch_free). insphere ties are

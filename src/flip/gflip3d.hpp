@@ -98,8 +98,9 @@ struct FlipConfig {
 
 // The fast/exact split of the parallel layer with the predicates' scratch size. exact
 // returns whether it decided; a generic exact(i, auto work) gets its own instance without
-// a scratch (work of type std::nullptr_t: no expansions in it, geom's predicates.hpp); on integer input (Geo::int_points / int_all) the undecided items are first tried
-// without a scratch (par::fast_then_exact_tiered, Geo::int_points).
+// a scratch (work of type std::nullptr_t: no expansions in it, geom's predicates.hpp); on
+// integer input (Geo::int_points / int_all) the undecided items are first tried without a
+// scratch (par::fast_then_exact_tiered, Geo::int_points).
 // With `tally` (a counter in backend memory) the count of exact items goes there and the
 // host is not waited for; max_threads > 0 then caps the scratch threads (par::fast_then_exact).
 template <class B, class Fast, class Exact>
