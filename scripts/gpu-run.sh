@@ -197,6 +197,41 @@ ncu_flips() {
   done
 }
 
+# Per-kernel GPU time (nsys, CUDA kernel summary, top 25 by time) of each binary named on
+# the same arguments: nsys_kernels TAG "BINARY..." ARGS...
+nsys_kernels() {
+  local tag=$1 bins=$2
+  shift 2
+  local nsys
+  nsys=$(command -v nsys || ls /opt/nvidia/nsight-systems/*/bin/nsys /usr/local/cuda/bin/nsys 2>/dev/null | head -1)
+  if [ -z "$nsys" ]; then
+    echo "== nsys_kernels $tag: no nsys on this machine" | tee -a "$out/summary.txt"
+    return
+  fi
+  for b in $bins; do
+    step "${tag}_nsys_$b" 150 "$nsys" profile --force-overwrite true -o "/tmp/nsys-$tag-$b" "$bin/$b" "$@"
+    "$nsys" stats --force-export true --report cuda_gpu_kern_sum --format csv "/tmp/nsys-$tag-$b.nsys-rep" \
+      >"/tmp/nsys-$tag-$b.csv" 2>/dev/null
+    python3 - "$b" "/tmp/nsys-$tag-$b.csv" <<'PY' | tee -a "$out/summary.txt"
+import csv, re, sys
+rows = []
+with open(sys.argv[2]) as f:
+    lines = [l for l in f if l.count(",") > 4]
+for r in csv.DictReader(lines):
+    try:
+        rows.append((float(r["Total Time (ns)"]), int(r["Instances"]), r["Name"]))
+    except (KeyError, ValueError):
+        pass
+rows.sort(reverse=True)
+print(f"== {sys.argv[1]}: {len(rows)} kernels, {sum(t for t, _, _ in rows) / 1e6:.1f} ms in all")
+for t, k, n in rows[:25]:
+    m = re.findall(r"(GFlip3D|Splayer|GDel3D|GStar4D)<[^>]*>::(\w+)", n)
+    free = " free" if "scratch_kernel<true" in n else " scratch" if "scratch_kernel<false" in n else ""
+    print(f"   {t / 1e6:8.2f} ms {k:6d}x  {'::'.join(m[-1]) if m else n[:90]}{free}")
+PY
+  done
+}
+
 case "$plan" in
   tests)  # the GPU tests of gstar4d and its stages, and the gdel3d regression tests
     step star_stage 120 "$tbin/gpu_star_stage"
@@ -1150,6 +1185,26 @@ case "$plan" in
       bench_old "s42g_cpu_old$r" 100 --dist uniform --n 1000000 --methods gdel3d-cpu --repeat 3
       bench "s42g_cpu_new$r" 100 --dist uniform --n 1000000 --methods gdel3d-cpu --repeat 3
     done
+    ;;
+  s43a)  # session 43: the integer stage's one conversion (int_point), the walks' gathers by index on the host:
+          # gdel-bench-old (d6eb052's code) against gdel-bench as s42a
+    oldnew s43a
+    ;;
+  s43b)  # session 43: the CPU backend on the host's threads, old (d6eb052) against new, alternating, two
+          # rounds, sphere, grid and uniform 10^6
+    for r in 1 2; do
+      bench_old "s43b_cpu_old$r" 120 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cpu --repeat 3
+      bench "s43b_cpu_new$r" 120 --dist sphere,grid,uniform --n 1000000 --methods gdel3d-cpu --repeat 3
+    done
+    ;;
+  s43c)  # session 43: the GPU tests, predicates and flips (build/s43t)
+    step predicates 200 "$tbin/gpu_predicates"
+    step gflip3d 150 "$tbin/gpu_gflip3d"
+    ;;
+  s43d)  # session 43: where the star builds' time went (RESULTS session 42: +15 to +26 %): per-kernel GPU
+          # time of 211af19 (gdel-bench-s41), d6eb052 (gdel-bench-old) and new, sphere 10^6
+    nsys_kernels s43d "gdel-bench-s41 gdel-bench-old gdel-bench" --dist sphere --n 1000000 --methods gdel3d-cuda-dev \
+      --repeat 1 --no-verify
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

@@ -58,18 +58,24 @@ struct Geo {
     return int_all || (int_points && a != inf && b != inf && c != inf && d != inf && e != inf);
   }
 
+  // A predicate's sign as Geo's answer: kUncertain (a filter's, or an exact form's
+  // without a scratch outside the integer stage) is kUndecided; so is a filter's 0,
+  // should one return it (the exact form decides).
+  GDEL_HD static int exact_answer(int s) { return s == geom::kUncertain ? int(par::kUndecided) : s; }
+  GDEL_HD static int filter_answer(int s) { return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s; }
+
   // orient3d(a,b,c,d) > 0 iff (a,b,c,d) is positively oriented.
   GDEL_HD int orient_fast(vid_t a, vid_t b, vid_t c, vid_t d) const {
-    int s = geom::orient3d_filter(p(a), p(b), p(c), p(d));
-    if (s == geom::kUncertain || s == 0) return par::kUndecided;
+    const int s = geom::orient3d_filter(p(a), p(b), p(c), p(d));
+    if (filter_answer(s) == par::kUndecided) return par::kUndecided;
     bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
     return neg ? -s : s;
   }
   template <class Work>
   GDEL_HD int orient_exact(vid_t a, vid_t b, vid_t c, vid_t d, Work work) const {
     if (geom::no_scratch(work) && !scratch_free(a, b, c, d)) return par::kUndecided;
-    int s = geom::orient3d_sos(p(a), p(b), p(c), p(d), sid[a], sid[b], sid[c], sid[d], work);
-    if (s == geom::kUncertain) return par::kUndecided;  // (work = nullptr only)
+    const int s = geom::orient3d_sos(p(a), p(b), p(c), p(d), sid[a], sid[b], sid[c], sid[d], work);
+    if (exact_answer(s) == par::kUndecided) return par::kUndecided;  // (work = nullptr only)
     bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
     return neg ? -s : s;
   }
@@ -83,13 +89,13 @@ struct Geo {
   // dropping the flat tets of an output: the filter's sign or kUndecided, then exact.
   GDEL_HD std::int8_t volume_sign_fast(const vid_t* v) const {
     const int s = geom::orient3d_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]));
-    return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
+    return static_cast<std::int8_t>(filter_answer(s));
   }
   template <class Work>
   GDEL_HD std::int8_t volume_sign_exact(const vid_t* v, Work work) const {
     if (geom::no_scratch(work) && !scratch_free(v[0], v[1], v[2], v[3])) return par::kUndecided;
     const int s = geom::orient3d_exact(p(v[0]), p(v[1]), p(v[2]), p(v[3]), work);
-    return s == geom::kUncertain ? par::kUndecided : static_cast<std::int8_t>(s);
+    return static_cast<std::int8_t>(exact_answer(s));
   }
 
   GDEL_HD static int inf_slot(const vid_t* t, vid_t inf) {
@@ -121,21 +127,21 @@ struct Geo {
         const int s = geom::power_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), w[v[0]], w[v[1]],
                                            w[v[2]], w[v[3]], w[v[4]], sid[v[0]], sid[v[1]], sid[v[2]], sid[v[3]],
                                            sid[v[4]], work);
-        return s == geom::kUncertain ? int(par::kUndecided) : s;
+        return exact_answer(s);
       } else {
         int s = geom::power_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), w[v[0]], w[v[1]], w[v[2]],
                                    w[v[3]], w[v[4]]);
-        return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
+        return filter_answer(s);
       }
     }
     if (j < 0) {
       if constexpr (Exact) {
         const int s = geom::insphere_lift_sos(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]), sid[v[0]], sid[v[1]],
                                               sid[v[2]], sid[v[3]], sid[v[4]], work);
-        return s == geom::kUncertain ? int(par::kUndecided) : s;
+        return exact_answer(s);
       } else {
         int s = geom::insphere_filter(p(v[0]), p(v[1]), p(v[2]), p(v[3]), p(v[4]));
-        return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
+        return filter_answer(s);
       }
     }
     vid_t u[4];  // (∞'s slot by a compare per slot: u[j] would put u in the stack)
@@ -143,10 +149,10 @@ struct Geo {
     int s;
     if constexpr (Exact) {
       s = geom::orient3d_sos(p(u[0]), p(u[1]), p(u[2]), p(u[3]), sid[u[0]], sid[u[1]], sid[u[2]], sid[u[3]], work);
-      if (s == geom::kUncertain) return par::kUndecided;
+      if (exact_answer(s) == par::kUndecided) return par::kUndecided;
     } else {
       s = geom::orient3d_filter(p(u[0]), p(u[1]), p(u[2]), p(u[3]));
-      if (s == geom::kUncertain || s == 0) return par::kUndecided;
+      if (filter_answer(s) == par::kUndecided) return par::kUndecided;
     }
     return j < 4 ? s : -s;
   }
@@ -168,10 +174,10 @@ struct Geo {
       if (geom::no_scratch(work) && !finite_scratch_free()) return par::kUndecided;
       const int s = geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]],
                                             sid[t[2]], sid[t[3]], sid[e], work);
-      return s == geom::kUncertain ? int(par::kUndecided) : s;
+      return exact_answer(s);
     } else {
       int s = geom::insphere_filter(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
-      return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s;
+      return filter_answer(s);
     }
   }
 };

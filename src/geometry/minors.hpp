@@ -194,28 +194,35 @@ GDEL_HD GDEL_FORCEINLINE bool small_integer(double x, double max, std::int64_t& 
   return static_cast<double>(v) == x;
 }
 
+// The entries of p that `need` asks for (bit c < 3: coordinate c; bit 3: the height) as
+// integers of the stage at `scale` into q: q[c] = p[c] * scale, q[3] = x^2 + y^2 + z^2 - w
+// with w times scale^2 (the height needs x, y, z and w); false when one of them is not
+// such an integer (small_integer). Coordinates not asked for are left as they are, q[3]
+// is 0 without the height. The one conversion of a point to the integer stage
+// (int_entries, int_rows_at, and predicates.hpp's integer_point).
+GDEL_HD GDEL_FORCEINLINE bool int_point(const double* p, double w, double scale, unsigned need,
+                                        std::int64_t (&q)[4]) {
+  const bool lifted = need >> 3 & 1u;
+  for (int c = 0; c < 3; ++c)
+    if ((lifted || (need >> c & 1u)) && !small_integer(fp::mul(p[c], scale), kIntCoordMax, q[c])) return false;
+  std::int64_t wi = 0;
+  if (lifted && !small_integer(fp::mul(w, fp::mul(scale, scale)), kIntWeightMax, wi)) return false;
+  q[3] = lifted ? q[0] * q[0] + q[1] * q[1] + q[2] * q[2] - wi : 0;
+  return true;
+}
+
 // The entries of det[[q_rows[i], 1]] over the columns cols[0..K), times `scale` (weights
 // times scale^2), into q when they are all integers in the stage's range; false otherwise.
 template <int K>
 GDEL_HD bool int_entries(const LiftedRows& R, const int* rows, const int* cols, double scale,
                          std::int64_t (&q)[K + 1][K]) {
-  const double wscale = fp::mul(scale, scale);
+  unsigned need = 0;
+  for (int j = 0; j < K; ++j) need |= 1u << cols[j];
   for (int i = 0; i <= K; ++i) {
-    const double* p = R.p[rows[i]];
-    for (int j = 0; j < K; ++j) {
-      const int c = cols[j];
-      if (c != 3) {
-        if (!small_integer(fp::mul(p[c], scale), kIntCoordMax, q[i][j])) return false;
-      } else {
-        std::int64_t x, y, z, w;
-        if (!small_integer(fp::mul(p[0], scale), kIntCoordMax, x) ||
-            !small_integer(fp::mul(p[1], scale), kIntCoordMax, y) ||
-            !small_integer(fp::mul(p[2], scale), kIntCoordMax, z) ||
-            !small_integer(fp::mul(R.w[rows[i]], wscale), kIntWeightMax, w))
-          return false;
-        q[i][j] = x * x + y * y + z * z - w;
-      }
-    }
+    std::int64_t v[4] = {0, 0, 0, 0};
+    if (!int_point(R.p[rows[i]], R.w[rows[i]], scale, need, v)) return false;
+    for (int j = 0; j < K; ++j)  // (by selects: cols may be known only at run time)
+      q[i][j] = cols[j] == 0 ? v[0] : cols[j] == 1 ? v[1] : cols[j] == 2 ? v[2] : v[3];
   }
   return true;
 }
@@ -322,6 +329,21 @@ GDEL_HD bool det_ones_int(const LiftedRows& R, const int* rows, const int* cols,
   return true;
 }
 
+// out[first + i] = get(r) for r the i-th set bit of `mask` below N (ascending): the
+// gather of a minor's rows or columns, by selects over fixed indices (an array indexed at
+// run time would be put in local memory on the device).
+template <int N, int M, class T, class Get>
+GDEL_HD GDEL_FORCEINLINE void gather_masked(unsigned mask, int first, Get get, T (&out)[M]) {
+  int slot = first;
+  for (int r = 0; r < N; ++r) {
+    if (!(mask >> r & 1u)) continue;
+    const T v = get(r);
+    for (int s = 0; s < M; ++s)
+      if (slot == s) out[s] = v;
+    ++slot;
+  }
+}
+
 // The integer stage over a whole SoS walk (predicates.hpp): the N sorted rows converted
 // once, x, y, z (and, for a lifted walk, h) of each as int64 at one scale, so that every
 // minor of the walk is integer arithmetic on registers, with no conversion, filter or
@@ -335,15 +357,8 @@ struct IntRows {
 // not an integer of the stage's range (small_integer; h only when lifted).
 template <int N>
 GDEL_HD bool int_rows_at(const LiftedRows& R, bool lifted, double scale, IntRows& Q) {
-  const double wscale = fp::mul(scale, scale);
-  for (int r = 0; r < N; ++r) {
-    const double* p = R.p[r];
-    for (int c = 0; c < 3; ++c)
-      if (!small_integer(fp::mul(p[c], scale), kIntCoordMax, Q.q[r][c])) return false;
-    std::int64_t w = 0;
-    if (lifted && !small_integer(fp::mul(R.w[r], wscale), kIntWeightMax, w)) return false;
-    Q.q[r][3] = lifted ? Q.q[r][0] * Q.q[r][0] + Q.q[r][1] * Q.q[r][1] + Q.q[r][2] * Q.q[r][2] - w : 0;
-  }
+  for (int r = 0; r < N; ++r)
+    if (!int_point(R.p[r], R.w[r], scale, lifted ? 15u : 7u, Q.q[r])) return false;
   return true;
 }
 template <int N>
@@ -355,33 +370,28 @@ GDEL_HD bool int_rows(const LiftedRows& R, bool lifted, IntRows& Q) {
 // columns of the mask `cols` (kColX.. kColH, K = 1..3 of them; K + 1 rows). The K x K
 // matrix of differences to the last row (as det_ones_int) is placed at the lower right of
 // a 3 x 3 one whose other entries are those of the identity (same determinant), every
-// index fixed at compile time (selects, not a gather through memory). Its first two
+// index fixed at compile time (gather_masked). Its first two
 // columns then hold coordinate differences (|d| <= 2^24) or 0 / 1, only the third can be
 // a height difference (|d| <= 2^49): the 2x2 minors of the first two fit int64 (<= 2^49)
 // and the last step is three widening products (< 2^100), for every entry of the stage.
 GDEL_HD inline int int_minor_sign(const IntRows& Q, unsigned rows, unsigned cols) {
   const int k = int(cols & 1u) + int(cols >> 1 & 1u) + int(cols >> 2 & 1u) + int(cols >> 3 & 1u);
   const int first = 3 - k;  // padding rows and columns 0..first-1
-  std::int64_t e[4][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  int slot = first;  // the kept rows go to e[first..3], their columns to e[.][first..2]
-  for (int r = 0; r < 5; ++r) {
-    if (!(rows >> r & 1u)) continue;
-    std::int64_t v[3] = {0, 0, 0};
-    int cs = first;
-    for (int c = 0; c < 4; ++c) {
-      if (!(cols >> c & 1u)) continue;
-      for (int j = 0; j < 3; ++j)
-        if (cs == j) v[j] = Q.q[r][c];
-      ++cs;
-    }
-    for (int s = 0; s < 4; ++s)
-      if (slot == s)
-        for (int j = 0; j < 3; ++j) e[s][j] = v[j];
-    ++slot;
-  }
+  struct Row {
+    std::int64_t v[3];
+  };
+  Row e[4] = {};  // the kept rows go to e[first..3], their columns to e[.].v[first..2]
+  gather_masked<5>(
+      rows, first,
+      [&](int r) {
+        Row row{};  // (the padding columns: 0)
+        gather_masked<4>(cols, first, [&](int c) { return Q.q[r][c]; }, row.v);
+        return row;
+      },
+      e);
   std::int64_t d[3][3];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) d[i][j] = i < first ? std::int64_t(i == j) : e[i][j] - e[3][j];
+    for (int j = 0; j < 3; ++j) d[i][j] = i < first ? std::int64_t(i == j) : e[i].v[j] - e[3].v[j];
   auto m2 = [&](int a, int b) { return d[a][0] * d[b][1] - d[b][0] * d[a][1]; };
   const i128 det = mul_wide(d[0][2], m2(1, 2)) - mul_wide(d[1][2], m2(0, 2)) + mul_wide(d[2][2], m2(0, 1));
   return (det > 0) - (det < 0);

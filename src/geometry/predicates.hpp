@@ -192,18 +192,15 @@ struct WalkMinor {
   const LiftedRows& R;
   bool weighted;
   Work work;
-  IntRows Q;
+  // Zeroed although int_rows writes it before any read: left uninitialized, nvcc kept
+  // the walk's values in local memory (propose_flip<true>: 832 B of stack and 1 614 B of
+  // spill stores against 272 and 0; bench/RESULTS.md, session 43).
+  IntRows Q{};
   int integer = 0;  // Q: 0 not yet converted, 1 converted, -1 not of the integer stage
   GDEL_HD int operator()(unsigned rows, unsigned cols) {
-    if (cols == (kColX | kColY | kColZ)) {  // the four rows' pointers by selects (fixed indices)
+    if (cols == (kColX | kColY | kColZ)) {  // the four rows' pointers (gather_masked)
       const double* p[4] = {nullptr, nullptr, nullptr, nullptr};
-      int k = 0;
-      for (int r = 0; r < 5; ++r) {
-        if (!(rows >> r & 1u)) continue;
-        for (int j = 0; j < 4; ++j)
-          if (k == j) p[j] = R.p[r];
-        ++k;
-      }
+      gather_masked<5>(rows, 0, [&](int r) { return R.p[r]; }, p);
       const int f = orient3d_filter(p[0], p[1], p[2], p[3]);
       if (f != kUncertain) return -f;  // det[[q, 1]] over x, y, z = -orient3d
     }
@@ -310,7 +307,7 @@ GDEL_HD int lift_walk(Minor& minor) {
 // where the integer stage does not apply.
 template <int N, class Work>
 GDEL_HD int sos_walk(const LiftedRows& R, bool weighted, Work work) {
-  WalkMinor<N, Work> minor{R, weighted, work, {}};
+  WalkMinor<N, Work> minor{R, weighted, work};
   return sos_table_walk(N == 5, minor);
 }
 
@@ -345,7 +342,7 @@ GDEL_HD int lift_sos_degenerate(const double* const* p, const double* w, const s
                                 Work work) {
   LiftedRows R;
   const int swaps = sorted_rows<5>(p, w, ids, weighted, R);
-  WalkMinor<5, Work> minor{R, weighted, work, {}};
+  WalkMinor<5, Work> minor{R, weighted, work};
   const int v = lift_walk(minor);
   return (swaps & 1) ? v : negate_sign(v);  // value = -det5(original order)
 }
@@ -366,12 +363,8 @@ GDEL_HD int lift_sos_degenerate(const double* const* p, const double* w, const s
 // Geo::int_all).
 inline constexpr double kQuarterScale = detail::kIntQuarter;
 GDEL_HD inline bool integer_point(const double* p, double w = 0.0, double scale = 1.0) {
-  std::int64_t v;
-  const double ws = fp::mul(scale, scale);
-  return detail::small_integer(fp::mul(p[0], scale), detail::kIntCoordMax, v) &&
-         detail::small_integer(fp::mul(p[1], scale), detail::kIntCoordMax, v) &&
-         detail::small_integer(fp::mul(p[2], scale), detail::kIntCoordMax, v) &&
-         detail::small_integer(fp::mul(w, ws), detail::kIntWeightMax, v);
+  std::int64_t q[4];
+  return detail::int_point(p, w, scale, 15u, q);
 }
 
 // ---------------------------------------------------------------------------------------
