@@ -197,37 +197,37 @@ ncu_flips() {
   done
 }
 
-# Per-kernel GPU time (nsys, CUDA kernel summary, top 25 by time) of each binary named on
-# the same arguments: nsys_kernels TAG "BINARY..." ARGS...
-nsys_kernels() {
-  local tag=$1 bins=$2
-  shift 2
-  local nsys
-  nsys=$(command -v nsys || ls /opt/nvidia/nsight-systems/*/bin/nsys /usr/local/cuda/bin/nsys 2>/dev/null | head -1)
-  if [ -z "$nsys" ]; then
-    echo "== nsys_kernels $tag: no nsys on this machine" | tee -a "$out/summary.txt"
-    return
-  fi
+# Per-kernel GPU time (ncu, gpu__time_duration of the kernels whose mangled name matches
+# REGEX, summed by kernel) of each binary named, on the same arguments:
+# ncu_kernels TAG REGEX "BINARY..." ARGS...
+ncu_kernels() {
+  local tag=$1 regex=$2 bins=$3
+  shift 3
+  local ncu
+  ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
   for b in $bins; do
-    step "${tag}_nsys_$b" 150 "$nsys" profile --force-overwrite true -o "/tmp/nsys-$tag-$b" "$bin/$b" "$@"
-    "$nsys" stats --force-export true --report cuda_gpu_kern_sum --format csv "/tmp/nsys-$tag-$b.nsys-rep" \
-      >"/tmp/nsys-$tag-$b.csv" 2>/dev/null
-    python3 - "$b" "/tmp/nsys-$tag-$b.csv" <<'PY' | tee -a "$out/summary.txt"
-import csv, re, sys
-rows = []
-with open(sys.argv[2]) as f:
-    lines = [l for l in f if l.count(",") > 4]
+    step "${tag}_ncu_$b" 170 "$ncu" --clock-control none --kernel-name-base mangled -k "regex:$regex" --csv \
+      --metrics gpu__time_duration.sum "$bin/$b" "$@"
+    python3 - "$b" "/tmp/gpu-run-${tag}_ncu_$b.log" <<'PY' | tee -a "$out/summary.txt"
+import collections, csv, re, subprocess, sys
+lines = [l for l in open(sys.argv[2], errors="replace") if l.startswith('"')]
+tot, cnt = collections.Counter(), collections.Counter()
 for r in csv.DictReader(lines):
-    try:
-        rows.append((float(r["Total Time (ns)"]), int(r["Instances"]), r["Name"]))
-    except (KeyError, ValueError):
-        pass
-rows.sort(reverse=True)
-print(f"== {sys.argv[1]}: {len(rows)} kernels, {sum(t for t, _, _ in rows) / 1e6:.1f} ms in all")
-for t, k, n in rows[:25]:
-    m = re.findall(r"(GFlip3D|Splayer|GDel3D|GStar4D)<[^>]*>::(\w+)", n)
-    free = " free" if "scratch_kernel<true" in n else " scratch" if "scratch_kernel<false" in n else ""
-    print(f"   {t / 1e6:8.2f} ms {k:6d}x  {'::'.join(m[-1]) if m else n[:90]}{free}")
+    if r.get("Metric Name") != "gpu__time_duration.sum":
+        continue
+    v = float(r["Metric Value"].replace(",", ""))
+    ns = v * {"nsecond": 1, "usecond": 1e3, "msecond": 1e6, "second": 1e9}.get(r.get("Metric Unit", "nsecond"), 1)
+    tot[r["Kernel Name"]] += ns
+    cnt[r["Kernel Name"]] += 1
+names = list(tot)
+dem = subprocess.run(["c++filt"], input="\n".join(names), capture_output=True, text=True).stdout.split("\n")
+print(f"== {sys.argv[1]}: {sum(cnt.values())} launches, {sum(tot.values()) / 1e6:.2f} ms in all")
+for n, d in sorted(zip(names, dem), key=lambda x: -tot[x[0]])[:12]:
+    kind = "free " if "scratch_kernel<true" in d else "scratch " if "scratch_kernel<false" in d else ""
+    m = re.findall(r"(Splayer|GDel3D)<[^>]*>::(\w+)", d)
+    lam = re.findall(r"lambda\(([^)]*)\)#(\d+)", d)
+    where = "::".join(m[-1]) if m else d[:60]
+    print(f"   {tot[n] / 1e6:8.2f} ms {cnt[n]:5d}x  {kind}{where} {('lambda#' + lam[-1][1]) if lam else ''}")
 PY
   done
 }
@@ -1201,10 +1201,11 @@ case "$plan" in
     step predicates 200 "$tbin/gpu_predicates"
     step gflip3d 150 "$tbin/gpu_gflip3d"
     ;;
-  s43d)  # session 43: where the star builds' time went (RESULTS session 42: +15 to +26 %): per-kernel GPU
-          # time of 211af19 (gdel-bench-s41), d6eb052 (gdel-bench-old) and new, sphere 10^6
-    nsys_kernels s43d "gdel-bench-s41 gdel-bench-old gdel-bench" --dist sphere --n 1000000 --methods gdel3d-cuda-dev \
-      --repeat 1 --no-verify
+  s43d)  # session 43: where the star builds' time went (RESULTS session 42: +15 to +26 %): the kernels of
+          # Splayer::build_stars and GDel3D's seeded builds, timed by ncu, 211af19 (gdel-bench-s41), d6eb052
+          # (gdel-bench-old) and new, sphere 10^6
+    ncu_kernels s43d 'build_stars|TSeed' "gdel-bench-s41 gdel-bench-old gdel-bench" --dist sphere --n 1000000 \
+      --methods gdel3d-cuda-dev --repeat 1 --no-verify
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

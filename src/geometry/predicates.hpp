@@ -374,14 +374,14 @@ GDEL_HD inline bool integer_point(const double* p, double w = 0.0, double scale 
 // Exact sign of det[b-a, c-a, d-a]; work: kOrient3dWork doubles.
 template <class Work>
 GDEL_HD int orient3d_exact(const double* a, const double* b, const double* c,
-                                  const double* d, Work work) {
+                           const double* d, Work work) {
   const detail::LiftedRows R{{a, b, c, d, nullptr}, {0.0, 0.0, 0.0, 0.0, 0.0}};
   return detail::orient3d_exact_rows(R, work);
 }
 
 template <class Work>
 GDEL_HD int orient3d(const double* a, const double* b, const double* c, const double* d,
-                            Work work) {
+                     Work work) {
   const int s = orient3d_filter(a, b, c, d);
   return s != kUncertain ? s : orient3d_exact(a, b, c, d, work);
 }
@@ -389,8 +389,8 @@ GDEL_HD int orient3d(const double* a, const double* b, const double* c, const do
 // Never 0; ia..id: distinct original indices.
 template <class Work>
 GDEL_HD int orient3d_sos(const double* a, const double* b, const double* c,
-                                const double* d, std::int64_t ia, std::int64_t ib,
-                                std::int64_t ic, std::int64_t id, Work work) {
+                         const double* d, std::int64_t ia, std::int64_t ib,
+                         std::int64_t ic, std::int64_t id, Work work) {
   const int s = orient3d(a, b, c, d, work);
   if (s != 0) return s;
   const double* p[4] = {a, b, c, d};
@@ -408,23 +408,23 @@ GDEL_HD int orient3d_sos(const double* a, const double* b, const double* c,
 // Exact insphere sign; work: kInsphereWork doubles.
 template <class Work>
 GDEL_HD int insphere_exact(const double* a, const double* b, const double* c,
-                                  const double* d, const double* e, Work work) {
+                           const double* d, const double* e, Work work) {
   const detail::LiftedRows R{{a, b, c, d, e}, {0.0, 0.0, 0.0, 0.0, 0.0}};
   return detail::lifted_exact_rows(R, false, work);
 }
 
 template <class Work>
 GDEL_HD int insphere(const double* a, const double* b, const double* c, const double* d,
-                            const double* e, Work work) {
+                     const double* e, Work work) {
   const int s = insphere_filter(a, b, c, d, e);
   return s != kUncertain ? s : insphere_exact(a, b, c, d, e, work);
 }
 
 template <class Work>
 GDEL_HD int insphere_sos(const double* a, const double* b, const double* c,
-                                const double* d, const double* e, std::int64_t ia,
-                                std::int64_t ib, std::int64_t ic, std::int64_t id,
-                                std::int64_t ie, Work work) {
+                         const double* d, const double* e, std::int64_t ia,
+                         std::int64_t ib, std::int64_t ic, std::int64_t id,
+                         std::int64_t ie, Work work) {
   const int s = insphere(a, b, c, d, e, work);
   if (s != 0) return s;
   const double* p[5] = {a, b, c, d, e};
@@ -434,9 +434,9 @@ GDEL_HD int insphere_sos(const double* a, const double* b, const double* c,
 
 template <class Work>
 GDEL_HD int insphere_lift_sos(const double* a, const double* b, const double* c,
-                                     const double* d, const double* e, std::int64_t ia,
-                                     std::int64_t ib, std::int64_t ic, std::int64_t id,
-                                     std::int64_t ie, Work work) {
+                              const double* d, const double* e, std::int64_t ia,
+                              std::int64_t ib, std::int64_t ic, std::int64_t id,
+                              std::int64_t ie, Work work) {
   const int s = insphere(a, b, c, d, e, work);
   if (s != 0) return s;
   const double* p[5] = {a, b, c, d, e};
@@ -451,25 +451,25 @@ GDEL_HD int insphere_lift_sos(const double* a, const double* b, const double* c,
 // Exact power-test sign; work: kPowerWork doubles.
 template <class Work>
 GDEL_HD int power_exact(const double* a, const double* b, const double* c, const double* d,
-                               const double* e, double wa, double wb, double wc, double wd,
-                               double we, Work work) {
+                        const double* e, double wa, double wb, double wc, double wd,
+                        double we, Work work) {
   const detail::LiftedRows R{{a, b, c, d, e}, {wa, wb, wc, wd, we}};
   return detail::lifted_exact_rows(R, true, work);
 }
 
 template <class Work>
 GDEL_HD int power(const double* a, const double* b, const double* c, const double* d,
-                         const double* e, double wa, double wb, double wc, double wd, double we,
-                         Work work) {
+                  const double* e, double wa, double wb, double wc, double wd, double we,
+                  Work work) {
   const int s = power_filter(a, b, c, d, e, wa, wb, wc, wd, we);
   return s != kUncertain ? s : power_exact(a, b, c, d, e, wa, wb, wc, wd, we, work);
 }
 
 template <class Work>
 GDEL_HD int power_sos(const double* a, const double* b, const double* c, const double* d,
-                             const double* e, double wa, double wb, double wc, double wd,
-                             double we, std::int64_t ia, std::int64_t ib, std::int64_t ic,
-                             std::int64_t id, std::int64_t ie, Work work) {
+                      const double* e, double wa, double wb, double wc, double wd,
+                      double we, std::int64_t ia, std::int64_t ib, std::int64_t ic,
+                      std::int64_t id, std::int64_t ie, Work work) {
   const int s = power(a, b, c, d, e, wa, wb, wc, wd, we, work);
   if (s != 0) return s;
   const double* p[5] = {a, b, c, d, e};
@@ -480,10 +480,10 @@ GDEL_HD int power_sos(const double* a, const double* b, const double* c, const d
 
 template <class Work>
 GDEL_HD int power_lift_sos(const double* a, const double* b, const double* c,
-                                  const double* d, const double* e, double wa, double wb,
-                                  double wc, double wd, double we, std::int64_t ia,
-                                  std::int64_t ib, std::int64_t ic, std::int64_t id,
-                                  std::int64_t ie, Work work) {
+                           const double* d, const double* e, double wa, double wb,
+                           double wc, double wd, double we, std::int64_t ia,
+                           std::int64_t ib, std::int64_t ic, std::int64_t id,
+                           std::int64_t ie, Work work) {
   const int s = power(a, b, c, d, e, wa, wb, wc, wd, we, work);
   if (s != 0) return s;
   const double* p[5] = {a, b, c, d, e};

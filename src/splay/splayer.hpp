@@ -87,8 +87,8 @@ GDEL_HD int insert_recording(const flip::Geo& g, Tri* T, std::uint8_t* S, std::i
 // gp[*gk, gend). Host and device (the CUDA backend builds huge stars on the host).
 template <class Work>
 GDEL_HD void build_one_star(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
-                                   const vid_t* ov, I64 len, Work work, U64* gp, I64& gk, I64 gend,
-                                   std::int32_t* err, vid_t* killer, std::int32_t* count_out) {
+                            const vid_t* ov, I64 len, Work work, U64* gp, I64& gk, I64 gend,
+                            std::int32_t* err, vid_t* killer, std::int32_t* count_out) {
   if (len < 4) {
     *err = 7;
     return;
@@ -124,9 +124,9 @@ struct KeyedSet {
 // build order. Returns 1 if Flip-Flop made the star, 0 if it was rebuilt.
 template <class Work>
 GDEL_HD int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32_t cap, vid_t me,
-                                const U64* keys, const vid_t* ov, I64 len, std::int32_t seeded, Work work, U64* gp,
-                                I64& gk, I64 gend, std::int32_t* err, vid_t* killer, std::int32_t* count_out,
-                                I64 step_cap = -1) {
+                         const U64* keys, const vid_t* ov, I64 len, std::int32_t seeded, Work work, U64* gp,
+                         I64& gk, I64 gend, std::int32_t* err, vid_t* killer, std::int32_t* count_out,
+                         I64 step_cap = -1) {
   if (seeded >= 4 && !g.w) {  // (weighted stars may die: no Flip-Flop for them)
     std::int32_t count = seeded;
     const I64 gk0 = gk;

@@ -62,7 +62,7 @@ GDEL_STAR_NOINLINE GDEL_HD std::uint8_t positivity_flag(const flip::Geo& g, vid_
 // then the projection of a convex lifted star, a partition of the directions around s.
 template <class Work>
 GDEL_HD std::int32_t star_locate(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t q,
-                                        std::int32_t t, Work work) {
+                                 std::int32_t t, Work work) {
   for (std::int32_t step = 0; step <= count; ++step) {
     bool moved = false;
     for (int k = 0; k < 3 && !moved; ++k) {
@@ -116,7 +116,7 @@ GDEL_HD inline void link_by_edges(Tri* T, int k) {
 // The star of s in the 4-simplex (s, a, b, c, d): the 4 facets through s.
 template <class Work>
 GDEL_HD void star_simplex(const flip::Geo& g, Tri* T, std::uint8_t* S, vid_t s, const vid_t* abcd,
-                                 std::uint8_t state, Work work) {
+                          std::uint8_t state, Work work) {
   const vid_t v[5] = {s, abcd[0], abcd[1], abcd[2], abcd[3]};
   const bool flip = g.orient4_any(v, work) > 0;  // d beyond (a,b,c): reverse every face
   for (int i = 0; i < 4; ++i) {
@@ -337,7 +337,7 @@ GDEL_STAR_NOINLINE GDEL_HD int star_insert(const flip::Geo& g, Tri* T, std::uint
 // perturbation.
 template <class Work>
 GDEL_HD bool star_proof(const flip::Geo& g, const Tri* T, std::int32_t count, vid_t s, vid_t v, vid_t* out,
-                               Work work, bool reflect = false) {
+                        Work work, bool reflect = false) {
   if (count <= 0) return false;
   const vid_t e = T[0].v[0];
   for (std::int32_t i = 0; i < count; ++i) {
