@@ -1207,6 +1207,25 @@ case "$plan" in
     ncu_kernels s43d 'build_stars|TSeed' "gdel-bench-s41 gdel-bench-old gdel-bench" --dist sphere --n 1000000 \
       --methods gdel3d-cuda-dev --repeat 1 --no-verify
     ;;
+  s43e)  # session 43: the star-build kernel's counters (ncu), 211af19 / d6eb052 / new, sphere 10^6: time,
+          # instructions, SIMT efficiency, local memory traffic (spills), registers, occupancy
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    for b in gdel-bench-s41 gdel-bench-old gdel-bench; do
+      step "s43e_ncu_$b" 120 "$ncu" --clock-control none --kernel-name-base mangled -k 'regex:scratch_kernel.*build_stars' \
+        --csv --metrics gpu__time_duration.sum,smsp__inst_executed.sum,smsp__thread_inst_executed_per_inst_executed.ratio,l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum,l1tex__t_bytes_pipe_lsu_mem_local_op_st.sum,launch__registers_per_thread,launch__stack_size,sm__warps_active.avg.pct_of_peak_sustained_active \
+        "$bin/$b" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+      grep -E '^"' "/tmp/gpu-run-s43e_ncu_$b.log" | python3 -c "
+import csv, sys
+for r in csv.reader(sys.stdin):
+    if len(r) > 14 and r[12] != 'Metric Name': print(f'   {sys.argv[1]:16s} {r[12]:62s} {r[13]:8s} {r[14]}')
+" "$b" | tee -a "$out/summary.txt"
+    done
+    ;;
+  s43f)  # session 43: seeded_build on the double* instance in the scratch-free pass too (a null pointer):
+          # old (1511102, gdel-bench-old) against new as s42a, then the star-build kernel's counters (s43e)
+    oldnew s43f
+    OUT="$out/e" bash "$0" s43e
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
