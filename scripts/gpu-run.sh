@@ -1210,7 +1210,7 @@ case "$plan" in
   s43e)  # session 43: the star-build kernel's counters (ncu), 211af19 / d6eb052 / new, sphere 10^6: time,
           # instructions, SIMT efficiency, local memory traffic (spills), registers, occupancy
     ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
-    for b in gdel-bench-s41 gdel-bench-old gdel-bench; do
+    for b in ${S43E_BINS:-gdel-bench-s41 gdel-bench-old gdel-bench}; do
       step "s43e_ncu_$b" 120 "$ncu" --clock-control none --kernel-name-base mangled -k 'regex:scratch_kernel.*build_stars' \
         --csv --metrics gpu__time_duration.sum,smsp__inst_executed.sum,smsp__thread_inst_executed_per_inst_executed.ratio,l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum,l1tex__t_bytes_pipe_lsu_mem_local_op_st.sum,launch__registers_per_thread,launch__stack_size,sm__warps_active.avg.pct_of_peak_sustained_active \
         "$bin/$b" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
@@ -1225,6 +1225,77 @@ for r in csv.reader(sys.stdin):
           # old (1511102, gdel-bench-old) against new as s42a, then the star-build kernel's counters (s43e)
     oldnew s43f
     OUT="$out/e" bash "$0" s43e
+    ;;
+  s44a)  # session 44: where the star-build kernel's warps diverge: ncu source counters (per SASS instruction:
+          # warp and thread instructions executed) of its one launch, sphere 10^6, written as CSV for
+          # scripts/sass-split.py (here: per function and address range); then its run time as s43e
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    for b in ${S44_BINS:-gdel-bench}; do
+      step "s44a_ncu_$b" 200 "$ncu" --clock-control none --kernel-name-base mangled \
+        -k "regex:${S44A_REGEX:-scratch_kernel.*build_stars}" --launch-skip "${S44A_SKIP:-0}" --launch-count 1 --section SourceCounters --import-source no -f -o "/tmp/s44a_$b" \
+        "$bin/$b" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+      step "s44a_src_$b" 120 "$ncu" -i "/tmp/s44a_$b.ncu-rep" --page source --csv --print-source sass
+      cp "/tmp/gpu-run-s44a_src_$b.log" "$out/sass_$b.csv" 2>/dev/null
+      gzip -f "$out/sass_$b.csv"
+      step "s44a_det_$b" 60 "$ncu" -i "/tmp/s44a_$b.ncu-rep" --page details --csv
+      grep -E 'Duration|Instructions|Threads|Divergen|Branch' "/tmp/gpu-run-s44a_det_$b.log" | head -20 | tee -a "$out/summary.txt"
+    done
+    ;;
+  s44b)  # session 44: the Flip-Flop loop in lockstep (par::Lockstep): old (0cf74a8, gdel-bench-old) against
+          # new as s42a, the star-build kernel's counters (s43e) of both, new's source counters (s44a)
+    oldnew s44b
+    OUT="$out/e" S43E_BINS="gdel-bench-old gdel-bench" bash "$0" s43e
+    OUT="$out/a" bash "$0" s44a
+    ;;
+  s44c)  # session 44: lockstep in the proofs' scan, the insertion loops and star_insert's flood fill, the star
+          # builds largest working set first: old (s44b's new, gdel-bench-old) against new as s42a, the
+          # star-build kernel's counters (s43e), the repair's kernels timed by ncu, sphere 10^6
+    oldnew s44c
+    OUT="$out/e" S43E_BINS="gdel-bench-old gdel-bench" bash "$0" s43e
+    ncu_kernels s44c 'scratch_kernel.*(Splayer|GDel3D)' "gdel-bench-old gdel-bench" --dist sphere --n 1000000 \
+      --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    ;;
+  s44d)  # session 44: the repair's kernels' counters (ncu: time, warp and thread instructions, local memory),
+          # summed by kernel over a sphere 10^6 run, for each of S44_BINS (default old and new)
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    for b in ${S44_BINS:-gdel-bench-old gdel-bench}; do
+      step "s44d_ncu_$b" 150 "$ncu" --clock-control none --kernel-name-base mangled \
+        -k "regex:${S44_REGEX:-scratch_kernel.*(Splayer|GDel3D)}" --csv \
+        --metrics gpu__time_duration.sum,smsp__inst_executed.sum,smsp__thread_inst_executed.sum,l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum \
+        "$bin/$b" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+      python3 - "$b" "/tmp/gpu-run-s44d_ncu_$b.log" <<'PY' | tee -a "$out/summary.txt"
+import collections, csv, re, subprocess, sys
+lines = [l for l in open(sys.argv[2], errors="replace") if l.startswith('"')]
+tot = collections.defaultdict(collections.Counter)
+for r in csv.DictReader(lines):
+    v = float(r["Metric Value"].replace(",", "") or 0)
+    if r["Metric Name"] == "gpu__time_duration.sum":
+        v *= {"ns": 1e-6, "nsecond": 1e-6, "us": 1e-3, "usecond": 1e-3, "ms": 1, "msecond": 1, "s": 1e3,
+              "second": 1e3}.get(r.get("Metric Unit"), 1)
+    tot[r["Kernel Name"]][r["Metric Name"]] += v
+names = list(tot)
+dem = subprocess.run(["c++filt"], input="\n".join(names), capture_output=True, text=True).stdout.split("\n")
+print(f"== {sys.argv[1]}")
+for n, d in sorted(zip(names, dem), key=lambda x: -tot[x[0]]["gpu__time_duration.sum"])[:8]:
+    t = tot[n]
+    m = re.findall(r"(Splayer|GDel3D)<[^>]*>::(\w+)", d)
+    wi, ti = t["smsp__inst_executed.sum"], t["smsp__thread_inst_executed.sum"]
+    print(f"   {t['gpu__time_duration.sum']:8.2f} ms  warp inst {wi / 1e9:6.2f} G  thread inst {ti / 1e9:6.2f} G"
+          f"  {ti / max(wi, 1):5.2f} thr/inst  local ld {t['l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum'] / 1e9:6.1f} GB"
+          f"  {'::'.join(m[-1]) if m else d[:50]}")
+PY
+    done
+    ;;
+  s44e)  # session 44: what is kept (Flip-Flop in lockstep, star builds largest first, the proofs by a walk):
+          # old (0cf74a8, gdel-bench-old) against new as s42a; the repair's kernels (s44d) of s44c's build
+          # (gdel-bench-s44c: the proofs by the scan) and new
+    oldnew s44e
+    OUT="$out/d" S44_BINS="gdel-bench-s44c gdel-bench" bash "$0" s44d
+    ;;
+  s44t)  # session 44: the GPU tests (gpu_predicates, gpu_gflip3d, gpu_gdel3d, gpu_greg3d, gpu_gstar4d, gpu_hostile)
+    for t in gpu_predicates gpu_gflip3d gpu_gdel3d gpu_greg3d gpu_gstar4d gpu_hostile; do
+      [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"  # (the carry limit: two calls, two folders)
+    done
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

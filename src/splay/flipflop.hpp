@@ -19,6 +19,7 @@
 
 #include <cstdint>
 
+#include "parallel/lockstep.hpp"
 #include "splay/star.hpp"
 
 namespace gdel::splay {
@@ -69,8 +70,12 @@ GDEL_STAR_NOINLINE GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::u
     S[t] |= bit;
     stack[sp++] = (t << 2) | k;
   };
-  for (std::int32_t i = 0; i < c0; ++i) {
-    if (positivity_flag(g, s, T[i], work) != 0) return false;  // not star-shaped: rebuild
+  // The loops below run in lockstep with the warp's other stars (par::Lockstep): where they
+  // give up they set `failed` and finish the loop, instead of returning from it.
+  const par::Lockstep group;
+  bool failed = false;
+  for (std::int32_t i = 0; i < c0 && !failed; ++i) {
+    if (positivity_flag(g, s, T[i], work) != 0) failed = true;  // not star-shaped: rebuild
     const std::uint8_t given = S[i];
     S[i] = kTriNew;
     for (int k = 0; k < 3; ++k)
@@ -135,8 +140,12 @@ GDEL_STAR_NOINLINE GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::u
   std::int64_t budget = 64 * static_cast<std::int64_t>(c0) + 4096;
   if (step_cap >= 0 && step_cap < budget) budget = step_cap;
   std::int64_t steps = 0;
-  while (sp > 0) {
-    if (++steps > budget) return false;
+  while (group.any(!failed && sp > 0)) {
+    if (failed || sp <= 0) continue;
+    if (++steps > budget) {
+      failed = true;
+      continue;
+    }
     const std::int32_t e = stack[--sp];
     const std::int32_t t = e >> 2;
     const int k = e & 3;
@@ -159,11 +168,11 @@ GDEL_STAR_NOINLINE GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::u
     if (m < 0 && !reflex) continue;
     if (live > 4) {
       if ((reflex || m == u) && degree(t, u) == 3) {
-        if (!flop(t, k, reflex)) return false;
+        failed = !flop(t, k, reflex);
         continue;
       }
       if ((reflex || m == v) && degree(t2, v) == 3) {
-        if (!flop(t2, k2, reflex)) return false;
+        failed = !flop(t2, k2, reflex);
         continue;
       }
     }
@@ -184,8 +193,10 @@ GDEL_STAR_NOINLINE GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::u
       b.adj[0] = T[t].adj[(k + 1) % 3];    // (v, w)
       b.adj[1] = (t << 2) | 0;
       b.adj[2] = T[t2].adj[(k2 + 2) % 3];  // (y, v)
-      if ((a.adj[1] >> 2) == t2 || (a.adj[2] >> 2) == t || (b.adj[0] >> 2) == t2 || (b.adj[2] >> 2) == t)
-        return false;  // a degree-3 vertex (cannot happen with both tets positive)
+      if ((a.adj[1] >> 2) == t2 || (a.adj[2] >> 2) == t || (b.adj[0] >> 2) == t2 || (b.adj[2] >> 2) == t) {
+        failed = true;  // a degree-3 vertex (cannot happen with both tets positive)
+        continue;
+      }
       T[t] = a;
       T[t2] = b;
       relink(t);
@@ -201,13 +212,17 @@ GDEL_STAR_NOINLINE GDEL_HD bool star_flipflop(const flip::Geo& g, Tri* T, std::u
       left_reflex(t, k);
       const vid_t x = pa ? v : u;
       const std::int32_t i = ws(x);
-      if (i < 0) return false;
+      if (i < 0) {
+        failed = true;
+        continue;
+      }
       if (!(mark[i] & 1)) {
         mark[i] |= 1;
         push_around(pa ? t2 : t, x);
       }
     }
   }
+  if (failed) return false;
   // locally convex at every edge (with every tet positive): convex. Every edge was
   // tested after the triangles on its two sides last changed (a change pushes it; the
   // diagonal of a flip of a reflex edge is convex) and found convex, unless it was left
