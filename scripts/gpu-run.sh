@@ -1297,6 +1297,19 @@ PY
       [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"  # (the carry limit: two calls, two folders)
     done
     ;;
+  s44f)  # session 44: insert_round's stars most insertions first, and the history's own profile stage: old
+          # (0cf74a8, gdel-bench-old) against new on every generator at 10^6 (the targets table), 10^7,
+          # profiles of new, the repair's kernels (s44d) of s44e's build (gdel-bench-s44e) and new
+    alternate s44f --dist uniform,gaussian,ball,thin_shell,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ROUNDS=1 alternate s44f_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s44f_prof 60 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    OUT="$out/d" S44_BINS="gdel-bench-s44e gdel-bench" bash "$0" s44d
+    ;;
+  s44g)  # session 44: the code as committed (s44e's + most_first, the history stage; insert_round in memory
+          # order again) against 0cf74a8 (gdel-bench-old) as s42a, then the GPU tests carried beside it (s44t)
+    oldnew s44g
+    OUT="$out/t" bash "$0" s44t
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

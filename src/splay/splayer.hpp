@@ -403,7 +403,12 @@ class Splayer {
     HostJobs hjobs;
     if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov, lp, sdp);
     ss_.host_built += static_cast<I64>(huge.size());
-    par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, auto work) {
+    // The kernel takes the stars largest working set first (most_first; Flip-Flop's loop
+    // runs in lockstep with the warp's other stars: par::Lockstep; bench/RESULTS.md, session 44).
+    const Buffer<U64, B> order = most_first(k, [=] GDEL_LAMBDA(I64 j) { return lhp[j + 1] - lhp[j]; });
+    const U64* orp = order.data();
+    par::for_each_with_scratch(ctx_, k, geom::kPredicateWork, [=] GDEL_LAMBDA(I64 i, auto work) {
+      const I64 j = static_cast<I64>(orp[i] & 0xffffffffu);
       const I64 s = s0 + j;
       const I64 a = lhp[j], b = lhp[j + 1];
       up[j] = 0;
@@ -746,6 +751,7 @@ class Splayer {
       ++ss_.rounds;
       ss_.insertions += n;
       add_history(req);
+      par::mark(ctx_, "splay: history");
       Buffer<U64, B> gone(ctx_);
       insert_round(req, gone);
       par::mark(ctx_, "splay: insert round");
@@ -890,6 +896,25 @@ class Splayer {
     return par::reduce_sum(ctx_, bp, static_cast<std::size_t>(nst_));
   }
 
+  // The order of a kernel over items j in [0, k) whose work grows with size(j), one thread
+  // each: keys (~size << 32 | j), sorted, largest first; the item is key & 0xffffffff. A
+  // warp's 32 items then take similar numbers of steps, and the longest start first, but
+  // neighbouring threads no longer work on neighbouring memory: a gain where a warp's
+  // slowest item dominates (build_stars, sphere: 55 -> 48 ms), a loss elsewhere
+  // (insert_round: 55 -> 95 ms; bench/RESULTS.md, session 44).
+  template <class Size>
+  Buffer<U64, B> most_first(I64 k, Size size) {
+    Buffer<U64, B> ord(ctx_, static_cast<std::size_t>(std::max<I64>(k, 1)));
+    U64* op = ord.data();
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
+      const I64 z = size(j);
+      const std::uint32_t c = z < I64(0xffffffff) ? static_cast<std::uint32_t>(z) : 0xffffffffu;
+      op[j] = (U64(0xffffffffu - c) << 32) | U64(j);
+    });
+    par::sort_keys(ctx_, op, static_cast<std::size_t>(k));
+    return ord;
+  }
+
   // (public for nvcc's extended lambdas)
   void pull_targets(Buffer<U64, B>& req) {
     const I64 n = static_cast<I64>(req.size());
@@ -993,6 +1018,8 @@ class Splayer {
       return static_cast<I64>(cnt[so[key_target(rp[hp[j]])]]);
     });
     if (!huge.empty()) ijobs = insert_jobs(huge, req, heads, static_cast<I64>(nh), room);
+    // (in memory order: most insertions first, as build_stars takes its stars, ran 55 -> 95
+    // ms on the sphere: bench/RESULTS.md, session 44)
     par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, auto work) {
       const I64 a = hp[j], b = (j + 1 < static_cast<I64>(nh)) ? hp[j + 1] : n;
       const vid_t sv_vert = key_target(rp[a]);

@@ -340,25 +340,38 @@ GDEL_HD bool star_proof(const flip::Geo& g, const Tri* T, std::int32_t count, vi
                         Work work, bool reflect = false) {
   if (count <= 0) return false;
   const vid_t e = T[0].v[0];
-  for (std::int32_t i = 0; i < count; ++i) {
-    const Tri& t = T[i];
-    if (tri_pos(t, e) >= 0) continue;
-    bool ok = true;
-    for (int k = 0; k < 3 && ok; ++k) {
+  // The cones from s over e and each link triangle without e partition the star's cone (the
+  // star pulled to e; one of them holds v under the perturbation). fails(t): the edge k of
+  // t (opposite t.v[k]) whose hyperplane (s, e, edge) has v and t.v[k] apart, or -1 if
+  // none: t is the answer. The first test that differs stops it.
+  auto fails = [&](const Tri& t) -> int {
+    for (int k = 0; k < 3; ++k) {
       const vid_t ti = t.v[k], tj = t.v[(k + 1) % 3], tk = t.v[(k + 2) % 3];
       const vid_t a[5] = {s, e, ti, tj, v};
       const vid_t b[5] = {s, e, ti, tj, tk};
       const int sv = g.orient4_any(a, work);
-      ok = (reflect ? -sv : sv) == g.orient4_any(b, work);
+      if ((reflect ? -sv : sv) != g.orient4_any(b, work)) return (k + 2) % 3;
     }
-    if (ok) {
-      out[0] = e;
-      out[1] = t.v[0];
-      out[2] = t.v[1];
-      out[3] = t.v[2];
-      return true;
-    }
+    return -1;
+  };
+  auto answer = [&](const Tri& t) {
+    out[0] = e;
+    for (int k = 0; k < 3; ++k) out[1 + k] = t.v[k];
+    return true;
+  };
+  // A visibility walk through that pulled triangulation, across an edge that v lies beyond,
+  // from the triangle across from e in T[0]: a few triangles instead of a scan of half the
+  // star's (bench/RESULTS.md, session 44). Leaving the disk of triangles without e, or more
+  // than `count` steps, falls back to the scan; neither is expected (a pulling triangulation
+  // is regular, and a visibility walk in a regular triangulation does not cycle).
+  std::int32_t t = T[0].adj[0] >> 2;
+  for (std::int32_t step = 0; step < count && tri_pos(T[t], e) < 0; ++step) {
+    const int k = fails(T[t]);
+    if (k < 0) return answer(T[t]);
+    t = T[t].adj[k] >> 2;
   }
+  for (std::int32_t i = 0; i < count; ++i)
+    if (tri_pos(T[i], e) < 0 && fails(T[i]) < 0) return answer(T[i]);
   return false;
 }
 
