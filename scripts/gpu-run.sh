@@ -198,7 +198,9 @@ ncu_flips() {
 }
 
 # Per-kernel GPU time (ncu, gpu__time_duration of the kernels whose mangled name matches
-# REGEX, summed by kernel) of each binary named, on the same arguments:
+# REGEX, summed by kernel) of each binary named, on the same arguments; NCU_METRICS=LIST adds
+# metrics, summed alike (smsp__inst_executed.sum with smsp__thread_inst_executed.sum also
+# prints the threads per warp instruction):
 # ncu_kernels TAG REGEX "BINARY..." ARGS...
 ncu_kernels() {
   local tag=$1 regex=$2 bins=$3
@@ -207,27 +209,35 @@ ncu_kernels() {
   ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
   for b in $bins; do
     step "${tag}_ncu_$b" 170 "$ncu" --clock-control none --kernel-name-base mangled -k "regex:$regex" --csv \
-      --metrics gpu__time_duration.sum "$bin/$b" "$@"
+      --metrics "gpu__time_duration.sum${NCU_METRICS:+,$NCU_METRICS}" "$bin/$b" "$@"
     python3 - "$b" "/tmp/gpu-run-${tag}_ncu_$b.log" <<'PY' | tee -a "$out/summary.txt"
 import collections, csv, re, subprocess, sys
 lines = [l for l in open(sys.argv[2], errors="replace") if l.startswith('"')]
-tot, cnt = collections.Counter(), collections.Counter()
+tot, cnt = collections.defaultdict(collections.Counter), collections.Counter()
+ms = {"ns": 1e-6, "nsecond": 1e-6, "us": 1e-3, "usecond": 1e-3, "ms": 1, "msecond": 1, "s": 1e3, "second": 1e3}
 for r in csv.DictReader(lines):
-    if r.get("Metric Name") != "gpu__time_duration.sum":
-        continue
-    v = float(r["Metric Value"].replace(",", ""))
-    ns = v * {"nsecond": 1, "usecond": 1e3, "msecond": 1e6, "second": 1e9}.get(r.get("Metric Unit", "nsecond"), 1)
-    tot[r["Kernel Name"]] += ns
-    cnt[r["Kernel Name"]] += 1
+    m, v = r.get("Metric Name"), float(r["Metric Value"].replace(",", "") or 0)
+    if m == "gpu__time_duration.sum":
+        v *= ms.get(r.get("Metric Unit"), 1e-6)
+        cnt[r["Kernel Name"]] += 1
+    tot[r["Kernel Name"]][m] += v
 names = list(tot)
 dem = subprocess.run(["c++filt"], input="\n".join(names), capture_output=True, text=True).stdout.split("\n")
-print(f"== {sys.argv[1]}: {sum(cnt.values())} launches, {sum(tot.values()) / 1e6:.2f} ms in all")
-for n, d in sorted(zip(names, dem), key=lambda x: -tot[x[0]])[:12]:
+T = lambda n: tot[n]["gpu__time_duration.sum"]
+print(f"== {sys.argv[1]}: {sum(cnt.values())} launches, {sum(T(n) for n in names):.2f} ms in all")
+for n, d in sorted(zip(names, dem), key=lambda x: -T(x[0]))[:12]:
     kind = "free " if "scratch_kernel<true" in d else "scratch " if "scratch_kernel<false" in d else ""
     m = re.findall(r"(Splayer|GDel3D)<[^>]*>::(\w+)", d)
     lam = re.findall(r"lambda\(([^)]*)\)#(\d+)", d)
     where = "::".join(m[-1]) if m else d[:60]
-    print(f"   {tot[n] / 1e6:8.2f} ms {cnt[n]:5d}x  {kind}{where} {('lambda#' + lam[-1][1]) if lam else ''}")
+    extra = ""
+    for k, v in tot[n].items():
+        if k != "gpu__time_duration.sum":
+            extra += f"  {k.split('.')[0]} {v / 1e9:.2f} G" if v >= 1e6 else f"  {k.split('.')[0]} {v:.0f}"
+    wi, ti = tot[n].get("smsp__inst_executed.sum"), tot[n].get("smsp__thread_inst_executed.sum")
+    if wi and ti:
+        extra += f"  {ti / wi:.2f} thr/inst"
+    print(f"   {T(n):8.2f} ms {cnt[n]:5d}x  {kind}{where} {('lambda#' + lam[-1][1]) if lam else ''}{extra}")
 PY
   done
 }
@@ -1228,7 +1238,7 @@ for r in csv.reader(sys.stdin):
     ;;
   s44a)  # session 44: where the star-build kernel's warps diverge: ncu source counters (per SASS instruction:
           # warp and thread instructions executed) of its one launch, sphere 10^6, written as CSV for
-          # scripts/sass-split.py (here: per function and address range); then its run time as s43e
+          # scripts/sass-split.py (per function and address range), and the launch's summary lines
     ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
     for b in ${S44_BINS:-gdel-bench}; do
       step "s44a_ncu_$b" 200 "$ncu" --clock-control none --kernel-name-base mangled \
@@ -1257,34 +1267,9 @@ for r in csv.reader(sys.stdin):
     ;;
   s44d)  # session 44: the repair's kernels' counters (ncu: time, warp and thread instructions, local memory),
           # summed by kernel over a sphere 10^6 run, for each of S44_BINS (default old and new)
-    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
-    for b in ${S44_BINS:-gdel-bench-old gdel-bench}; do
-      step "s44d_ncu_$b" 150 "$ncu" --clock-control none --kernel-name-base mangled \
-        -k "regex:${S44_REGEX:-scratch_kernel.*(Splayer|GDel3D)}" --csv \
-        --metrics gpu__time_duration.sum,smsp__inst_executed.sum,smsp__thread_inst_executed.sum,l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum \
-        "$bin/$b" --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
-      python3 - "$b" "/tmp/gpu-run-s44d_ncu_$b.log" <<'PY' | tee -a "$out/summary.txt"
-import collections, csv, re, subprocess, sys
-lines = [l for l in open(sys.argv[2], errors="replace") if l.startswith('"')]
-tot = collections.defaultdict(collections.Counter)
-for r in csv.DictReader(lines):
-    v = float(r["Metric Value"].replace(",", "") or 0)
-    if r["Metric Name"] == "gpu__time_duration.sum":
-        v *= {"ns": 1e-6, "nsecond": 1e-6, "us": 1e-3, "usecond": 1e-3, "ms": 1, "msecond": 1, "s": 1e3,
-              "second": 1e3}.get(r.get("Metric Unit"), 1)
-    tot[r["Kernel Name"]][r["Metric Name"]] += v
-names = list(tot)
-dem = subprocess.run(["c++filt"], input="\n".join(names), capture_output=True, text=True).stdout.split("\n")
-print(f"== {sys.argv[1]}")
-for n, d in sorted(zip(names, dem), key=lambda x: -tot[x[0]]["gpu__time_duration.sum"])[:8]:
-    t = tot[n]
-    m = re.findall(r"(Splayer|GDel3D)<[^>]*>::(\w+)", d)
-    wi, ti = t["smsp__inst_executed.sum"], t["smsp__thread_inst_executed.sum"]
-    print(f"   {t['gpu__time_duration.sum']:8.2f} ms  warp inst {wi / 1e9:6.2f} G  thread inst {ti / 1e9:6.2f} G"
-          f"  {ti / max(wi, 1):5.2f} thr/inst  local ld {t['l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum'] / 1e9:6.1f} GB"
-          f"  {'::'.join(m[-1]) if m else d[:50]}")
-PY
-    done
+    NCU_METRICS=smsp__inst_executed.sum,smsp__thread_inst_executed.sum,l1tex__t_bytes_pipe_lsu_mem_local_op_ld.sum \
+      ncu_kernels s44d "${S44_REGEX:-scratch_kernel.*(Splayer|GDel3D)}" "${S44_BINS:-gdel-bench-old gdel-bench}" \
+      --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
     ;;
   s44e)  # session 44: what is kept (Flip-Flop in lockstep, star builds largest first, the proofs by a walk):
           # old (0cf74a8, gdel-bench-old) against new as s42a; the repair's kernels (s44d) of s44c's build
