@@ -1295,6 +1295,17 @@ for r in csv.reader(sys.stdin):
     oldnew s44g
     OUT="$out/t" bash "$0" s44t
     ;;
+  s45a)  # session 45: where grid and sphere 10^6 and uniform 10^6 / 10^7 spend their time now (step profiles,
+          # the repair's laps), and the repair's kernels on the grid by ncu (time, threads per instruction;
+          # S45_REGEX: which kernels, default the exact passes; S45_ONLY=ncu: the ncu step alone)
+    [ "${S45_ONLY:-}" = ncu ] || {
+    GDEL_PROFILE=1 GDEL_SPLAY_DEBUG=1 bench s45a_prof 120 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s45a_u6 40 --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s45a_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    }
+    NCU_METRICS=smsp__inst_executed.sum,smsp__thread_inst_executed.sum ncu_kernels s45a_grid \
+      "${S45_REGEX:-scratch_kernel.*(Splayer|GDel3D)}" "${S44_BINS:-gdel-bench}" --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

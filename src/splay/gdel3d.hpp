@@ -136,46 +136,45 @@ class GDel3D {
     const StarView sv = sp_.view();
     const mesh::MeshView mv = mesh_.view();
     std::int32_t* ep = sp_.error_ptr();
-    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
+    // one thread per tet of a star (a pulled star of a point on a coplanar hull face has
+    // thousands: one thread per star would walk them all alone)
+    par::parallel_for(ctx_, static_cast<I64>(keys.size()), [=] GDEL_LAMBDA(I64 i) {
+      const I64 j = group_of(hp, k, i);
       const I64 s = s0 + j;
-      const I64 a = hp[j], b = hp[j + 1];
-      Tri* T = sv.tri + sv.begin[s];
-      std::uint8_t* S = sv.state + sv.begin[s];
-      if (!star_from_T(mv, kp + a, b - a, gvp[j], T)) ep[0] = 5;
-      for (I64 i = a; i < b; ++i) S[i - a] = kTriChecked;
-      sv.count[s] = static_cast<std::int32_t>(b - a);
+      const I64 a = hp[j], q = i - a;
+      if (!star_tri_from_T(mv, kp + a, hp[j + 1] - a, gvp[j], q, sv.tri[sv.begin[s] + q])) ep[0] = 5;
+      sv.state[sv.begin[s] + q] = kTriChecked;
+      if (q == 0) sv.count[s] = static_cast<std::int32_t>(hp[j + 1] - a);
     });
     sp_.throw_if_error("pulling a star from T");
   }
 
-  // The star of `me` as it is in T: the link triangles of its m tets (inc: their sorted
-  // keys (me << 32 | t)) in that order, with the link adjacency. False if T's adjacency
-  // around `me` is not a closed link (an internal error).
-  GDEL_HD static bool star_from_T(const mesh::MeshView& mv, const U64* inc, I64 m, vid_t me, Tri* T) {
+  // Triangle q of the star of `me` as it is in T: the link triangle of the q-th of its m
+  // tets (inc: their sorted keys (me << 32 | t)), with the link adjacency (neighbour
+  // triangles by the same local index). False if T's adjacency around `me` is not a
+  // closed link (an internal error).
+  GDEL_HD static bool star_tri_from_T(const mesh::MeshView& mv, const U64* inc, I64 m, vid_t me, I64 q, Tri& tr) {
     bool ok = true;
-    for (I64 i = 0; i < m; ++i) link_triangle(mv, key_vertex(inc[i]), me, T[i]);
-    for (I64 i = 0; i < m; ++i) {
-      const tid_t t = key_vertex(inc[i]);
-      Tri& tr = T[i];
-      for (int e = 0; e < 3; ++e) {
-        // edge e of the link triangle is opposite tr.v[e]: the tet face opposite it
-        const int lf = tet_slot(mv, t, tr.v[e]);
-        const tid_t u = mv.opp_tet(4 * I64(t) + lf);
-        const I64 lo = sorted_find(inc, m, pair_key(me, u));  // local index of u
-        if (lo < 0) {
-          ok = false;
-          continue;
-        }
-        // the edge of u's triangle with the same two vertices, reversed
-        Tri tu;
-        link_triangle(mv, u, me, tu);
-        const vid_t x = tr.v[(e + 1) % 3], y = tr.v[(e + 2) % 3];
-        int f = -1;
-        for (int q = 0; q < 3; ++q)
-          if (tu.v[(q + 1) % 3] == y && tu.v[(q + 2) % 3] == x) f = q;
-        if (f < 0) ok = false;
-        tr.adj[e] = static_cast<std::int32_t>((lo << 2) | (f < 0 ? 0 : f));
+    const tid_t t = key_vertex(inc[q]);
+    link_triangle(mv, t, me, tr);
+    for (int e = 0; e < 3; ++e) {
+      // edge e of the link triangle is opposite tr.v[e]: the tet face opposite it
+      const int lf = tet_slot(mv, t, tr.v[e]);
+      const tid_t u = mv.opp_tet(4 * I64(t) + lf);
+      const I64 lo = sorted_find(inc, m, pair_key(me, u));  // local index of u
+      if (lo < 0) {
+        ok = false;
+        continue;
       }
+      // the edge of u's triangle with the same two vertices, reversed
+      Tri tu;
+      link_triangle(mv, u, me, tu);
+      const vid_t x = tr.v[(e + 1) % 3], y = tr.v[(e + 2) % 3];
+      int f = -1;
+      for (int r = 0; r < 3; ++r)
+        if (tu.v[(r + 1) % 3] == y && tu.v[(r + 2) % 3] == x) f = r;
+      if (f < 0) ok = false;
+      tr.adj[e] = static_cast<std::int32_t>((lo << 2) | (f < 0 ? 0 : f));
     }
     return ok;
   }
@@ -183,29 +182,49 @@ class GDel3D {
   // build_stars' seed: a failed vertex's star as it is in T, for Flip-Flop, with the
   // link edges whose facet is not locally Delaunay in T (facet signs sg) flagged in S:
   // the others are convex (the same orient4), so Flip-Flop starts from the flagged ones.
+  // One thread per tet of a star (the star of a point on a coplanar hull face has
+  // thousands of them), in two passes: the triangles, then, for the stars whose link
+  // closed, their flags and the seed's size.
   struct TSeed {
     static constexpr bool enabled = true;
     mesh::MeshView mv;
-    const U64* inc;
-    const I64* heads;
+    const U64* inc;    // the failed vertices' tets, sorted keys (v << 32 | t)
+    const I64* heads;  // their groups, one per star
+    I64 ni;            // the keys' count
     const std::int8_t* sg;
-    GDEL_HD std::int32_t operator()(I64 j, vid_t me, Tri* T, std::uint8_t* S, std::int32_t cap) const {
-      const I64 a = heads[j], m = heads[j + 1] - a;
-      if (m > cap) return -1;
-      if (!star_from_T(mv, inc + a, m, me, T)) return -1;
-      for (I64 i = 0; i < m; ++i) {
-        const tid_t t = key_vertex(inc[a + i]);
+    void operator()(Context<B>& ctx, I64 s0, I64 k, const StarView& sv, std::int32_t* seeded) const {
+      Buffer<std::int32_t, B> bad(ctx, static_cast<std::size_t>(std::max<I64>(k, 1)));
+      std::int32_t* bp = bad.data();
+      par::fill(ctx, bp, bad.size(), std::int32_t(0));
+      const mesh::MeshView m = mv;
+      const U64* ip = inc;
+      const I64* hp = heads;
+      const std::int8_t* sgp = sg;
+      par::parallel_for(ctx, ni, [=] GDEL_LAMBDA(I64 i) {
+        const I64 j = group_of(hp, k, i);
+        const I64 s = s0 + j, a = hp[j], n = hp[j + 1] - a;
+        if (n > sv.cap[s]) return;
+        if (!star_tri_from_T(m, ip + a, n, key_target(ip[i]), i - a, sv.tri[sv.begin[s] + (i - a)]))
+          par::atomic_or(bp + j, std::int32_t(1));
+      });
+      par::parallel_for(ctx, ni, [=] GDEL_LAMBDA(I64 i) {
+        const I64 j = group_of(hp, k, i);
+        const I64 s = s0 + j, a = hp[j], n = hp[j + 1] - a;
+        const bool ok = n <= sv.cap[s] && bp[j] == 0;
+        if (i == a) seeded[j] = ok ? static_cast<std::int32_t>(n) : -1;
+        if (!ok) return;
+        const Tri& tr = sv.tri[sv.begin[s] + (i - a)];
+        const tid_t t = key_vertex(ip[i]);
         std::uint8_t mask = 0;
         for (int e = 0; e < 3; ++e) {
-          if (!(T[i].v[(e + 1) % 3] < T[i].v[(e + 2) % 3])) continue;  // each edge from one side
-          const I64 f = 4 * I64(t) + tet_slot(mv, t, T[i].v[e]);
-          const fid_t o = mv.opp(f);
-          const std::int8_t sign = (o >= 0 && facet_tet(o) < t) ? sg[o] : sg[f];
+          if (!(tr.v[(e + 1) % 3] < tr.v[(e + 2) % 3])) continue;  // each edge from one side
+          const I64 f = 4 * I64(t) + tet_slot(m, t, tr.v[e]);
+          const fid_t o = m.opp(f);
+          const std::int8_t sign = (o >= 0 && facet_tet(o) < t) ? sgp[o] : sgp[f];
           if (sign > 0) mask |= std::uint8_t(kTriStacked0 << e);
         }
-        S[i] = mask;
-      }
-      return static_cast<std::int32_t>(m);
+        sv.state[sv.begin[s] + (i - a)] = mask;
+      });
     }
   };
 
@@ -254,39 +273,49 @@ class GDel3D {
     // (GDEL_STAR_BUILD=rebuild: all rebuilt, for comparison)
     const char* how = std::getenv("GDEL_STAR_BUILD");
     const bool rebuild = how && std::strcmp(how, "rebuild") == 0;
-    const I64 s0 = rebuild ? sp_.build_stars(lk, gone) : sp_.build_stars(lk, gone, TSeed{mv, ip, ihp, facet_sign_.data()});
+    const I64 s0 = rebuild ? sp_.build_stars(lk, gone) : sp_.build_stars(lk, gone, TSeed{mv, ip, ihp, ni, facet_sign_.data()});
     res_.stars_built = k;
     if (rebuild) sp_.stats().rebuilt += k;
-    // rebuilt triangles that are tets of T need no check: per star, T's link triangles
-    // in canonical form, sorted (one thread per star: heap sort), then a binary search per
-    // star triangle — O((m + k) log m), not O(m k): a star of a point on a coplanar hull
-    // face has thousands of both (bench/RESULTS.md 2026-11-25)
+    // triangles that are tets of T need no check (Flip-Flop keeps most of them; a rebuilt
+    // star has them anew): T's link triangles of every star in canonical form (smallest
+    // vertex first), sorted by (star, triangle), then a binary search per star triangle
+    // in its star's range: O((m + k) log m) in all, one thread per item, not per star (a
+    // star of a point on a coplanar hull face has thousands of both: bench/RESULTS.md
+    // 2026-11-25 and session 45). The keys: (me << 32 | v0) and (v1 << 32 | v2), sorted
+    // by the second, then stably by the first.
     const StarView sv = sp_.view();
-    Buffer<LinkKey, B> lkeys(ctx_, static_cast<std::size_t>(std::max<I64>(ni, 1)));
-    LinkKey* lkp = lkeys.data();
-    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
-      const I64 s = s0 + j;
+    Buffer<U64, B> khi(ctx_, static_cast<std::size_t>(std::max<I64>(ni, 1)));
+    Buffer<U64, B> klo(ctx_, static_cast<std::size_t>(std::max<I64>(ni, 1)));
+    U64* hip = khi.data();
+    U64* lop = klo.data();
+    par::parallel_for(ctx_, ni, [=] GDEL_LAMBDA(I64 i) {
+      const vid_t me = key_target(ip[i]);
+      Tri lt;
+      link_triangle(mv, key_vertex(ip[i]), me, lt);
+      const LinkKey x = LinkKey::of(lt.v);
+      hip[i] = pair_key(me, x.v[0]);
+      lop[i] = pair_key(x.v[1], x.v[2]);
+    });
+    par::sort_pairs(ctx_, lop, hip, static_cast<std::size_t>(ni));
+    par::sort_pairs(ctx_, hip, lop, static_cast<std::size_t>(ni));
+    Buffer<I64, B> toff(ctx_, static_cast<std::size_t>(k + 1));
+    I64* top = toff.data();
+    par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) { top[j] = sv.count[s0 + j]; });
+    const I64 ntri = par::counts_to_offsets(ctx_, top, static_cast<std::size_t>(k));
+    par::parallel_for(ctx_, ntri, [=] GDEL_LAMBDA(I64 x) {
+      const I64 j = group_of(top, k, x);
+      const I64 s = s0 + j, i = x - top[j];
       const vid_t me = sv.vert[s];
-      Tri* T = sv.tri + sv.begin[s];
-      std::uint8_t* S = sv.state + sv.begin[s];
-      const I64 ta = ihp[j], m = ihp[j + 1] - ta;
-      LinkKey* C = lkp + ta;
-      for (I64 q = 0; q < m; ++q) {
-        Tri lt;
-        link_triangle(mv, key_vertex(ip[ta + q]), me, lt);
-        C[q] = LinkKey::of(lt.v);
+      const LinkKey y = LinkKey::of(sv.tri[sv.begin[s] + i].v);
+      const U64 h = pair_key(me, y.v[0]), l = pair_key(y.v[1], y.v[2]);
+      I64 lo = ihp[j], hi = ihp[j + 1];
+      while (lo < hi) {
+        const I64 mid = (lo + hi) / 2;
+        if (hip[mid] < h || (hip[mid] == h && lop[mid] < l)) lo = mid + 1;
+        else hi = mid;
       }
-      heap_sort(C, m);
-      for (std::int32_t i = 0; i < sv.count[s]; ++i) {
-        const LinkKey x = LinkKey::of(T[i].v);
-        I64 lo = 0, hi = m;
-        while (lo < hi) {
-          const I64 mid = (lo + hi) / 2;
-          if (C[mid] < x) lo = mid + 1;
-          else hi = mid;
-        }
-        set_kind(S[i], (lo < m && C[lo] == x) ? kTriChecked : kTriNew);
-      }
+      const bool in_t = lo < ihp[j + 1] && hip[lo] == h && lop[lo] == l;
+      set_kind(sv.state[sv.begin[s] + i], in_t ? kTriChecked : kTriNew);
     });
   }
 
@@ -298,34 +327,7 @@ class GDel3D {
       const int r = (t[0] < t[1]) ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
       return LinkKey{{t[r], t[(r + 1) % 3], t[(r + 2) % 3]}};
     }
-    GDEL_HD bool operator<(const LinkKey& o) const {
-      return v[0] != o.v[0] ? v[0] < o.v[0] : v[1] != o.v[1] ? v[1] < o.v[1] : v[2] < o.v[2];
-    }
-    GDEL_HD bool operator==(const LinkKey& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
   };
-  // In-place heap sort of n keys (one thread; no recursion, no extra memory).
-  GDEL_HD static void heap_sort(LinkKey* A, I64 n) {
-    auto sift = [A](I64 root, I64 end) {
-      for (;;) {
-        I64 c = 2 * root + 1;
-        if (c >= end) return;
-        if (c + 1 < end && A[c] < A[c + 1]) ++c;
-        if (!(A[root] < A[c])) return;
-        const LinkKey t = A[root];
-        A[root] = A[c];
-        A[c] = t;
-        root = c;
-      }
-    };
-    for (I64 i = n / 2 - 1; i >= 0; --i) sift(i, n);
-    for (I64 end = n - 1; end > 0; --end) {
-      const LinkKey t = A[0];
-      A[0] = A[end];
-      A[end] = t;
-      sift(0, end);
-    }
-  }
-
   // Steps 1-3.
   void repair() {
     const mesh::MeshView mv = mesh_.view();

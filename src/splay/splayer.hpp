@@ -20,6 +20,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -63,6 +64,19 @@ GDEL_HD inline I64 sorted_find(const U64* a, I64 n, U64 k) {
   return lo < n && a[lo] == k ? lo : -1;
 }
 GDEL_HD inline bool sorted_contains(const U64* a, I64 n, U64 k) { return sorted_find(a, n, k) >= 0; }
+
+// The group of item i (0 <= i < heads[k]) for the heads of k groups (heads[0] = 0, non-
+// decreasing, heads[k] the items' count): the j < k with heads[j] <= i < heads[j + 1].
+// For kernels over the items of all groups at once (one thread per item, not per group).
+GDEL_HD inline I64 group_of(const I64* heads, I64 k, I64 i) {
+  I64 lo = 0, hi = k - 1;
+  while (lo < hi) {
+    const I64 mid = lo + (hi - lo + 1) / 2;
+    if (heads[mid] <= i) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo;
+}
 
 // Inserts q into the star of s (star_insert) and records in out[k, kend) the pair
 // (s, x) of every vertex x that left the star, and (s, q) if q drowned. Running out of
@@ -150,7 +164,8 @@ GDEL_HD int seeded_build(const flip::Geo& g, Tri* T, std::uint8_t* S, std::int32
 // No seed stars (gStar4D, gReg3D): build_stars builds every star by beneath-beyond.
 struct NoSeed {
   static constexpr bool enabled = false;
-  GDEL_HD std::int32_t operator()(I64, vid_t, Tri*, std::uint8_t*, std::int32_t) const { return -1; }
+  template <class... A>
+  void operator()(A&&...) const {}
 };
 
 // Plain pointers to the stars, for kernels.
@@ -315,10 +330,11 @@ class Splayer {
   // coplanar hull face). Every triangle is New; the pairs become history; drowned and
   // submerged pairs go to `gone`. Returns the id of the first new star (stars follow in
   // the order of the groups).
-  // With a Seed (gDel3D), seed(j, vertex, T, S, cap) writes star j's triangles as they
-  // are in the input triangulation (adjacency set; S flags the edges Flip-Flop starts
-  // from, see star_flipflop) and returns their number, or -1; such
-  // a star is convexified by Flip-Flop (seeded_build) and rebuilt only if that gives up.
+  // With a Seed (gDel3D), seed(ctx, s0, k, view(), seeded) writes each star s0 + j's
+  // triangles as they are in the input triangulation into its slots (adjacency set; S
+  // flags the edges Flip-Flop starts from, see star_flipflop) and seeded[j] their number,
+  // or -1; such a star is convexified by Flip-Flop (seeded_build) and rebuilt only if
+  // that gives up.
   template <class Seed = NoSeed>
   I64 build_stars(const Buffer<U64, B>& lk, Buffer<U64, B>& gone, Seed seed = Seed{}) {
     I64 k = 0;
@@ -382,10 +398,7 @@ class Splayer {
     std::int32_t* sdp = seeded.data();
     std::int32_t* ffp = ffm.data();
     if constexpr (Seed::enabled) {
-      par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(I64 j) {
-        const I64 s = s0 + j;
-        sdp[j] = seed(j, gvp[j], sv.tri + sv.begin[s], sv.state + sv.begin[s], sv.cap[s]);
-      });
+      seed(ctx_, s0, k, sv, sdp);
     } else {
       par::fill(ctx_, sdp, static_cast<std::size_t>(k), std::int32_t(-1));
     }
@@ -632,6 +645,7 @@ class Splayer {
   void run_host_jobs(HostJobs& H, U64* gp, I64* up, std::int32_t* ffp, I64 ff_cap) {
     const flip::Geo& hg = host_geo_.g;
     par::on_host_threads(H.size(), [&](std::size_t h) {
+      const auto t0 = std::chrono::steady_clock::now();
       std::vector<double> work(geom::kPredicateWork);
       HostJob& J = H[h];
       I64 gk = 0;
@@ -639,6 +653,10 @@ class Splayer {
                           static_cast<I64>(J.pts.size()), J.seeded, work.data(), J.gone.data(), gk, J.g1 - J.g0,
                           &J.err, &J.killer, &J.count, ff_cap);
       J.used = gk;
+      if (debug_)
+        std::fprintf(stderr, "splay: host star %lld: working set %zu, seed %d -> %d triangles, %s, %.2f ms\n",
+                     (long long)J.s, J.pts.size(), J.seeded, J.count, J.ff ? "Flip-Flop" : "rebuilt",
+                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     });
     for (HostJob& J : H) {
       write_back(J, gp, up);
