@@ -1306,6 +1306,19 @@ for r in csv.reader(sys.stdin):
     NCU_METRICS=smsp__inst_executed.sum,smsp__thread_inst_executed.sum ncu_kernels s45a_grid \
       "${S45_REGEX:-scratch_kernel.*(Splayer|GDel3D)}" "${S44_BINS:-gdel-bench}" --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
     ;;
+  s46a)  # session 46: session 45's change measured (seeds and the T check one thread per tet): gpu_gdel3d first
+          # (in the binaries' folder), then medians of 5 on grid, sphere, uniform at 10^6, of 3 at uniform 10^7,
+          # and the step profiles of grid and sphere (the repair's laps)
+    [ -x "$tbin/gpu_gdel3d" ] && step gpu_gdel3d 200 "$tbin/gpu_gdel3d"
+    bench s46a_m6 120 --dist grid,sphere,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s46a_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 GDEL_SPLAY_DEBUG=1 bench s46a_prof 120 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s46b)  # session 46: the star builds' own profile marks ("stars: ...", "repair: failed stars' ..."): grid and
+          # sphere 10^6 step profiles, then the GPU tests in the binaries' folder (s44t)
+    GDEL_PROFILE=1 bench s46b_prof 120 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    OUT="$out/t" bash "$0" s44t
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -268,6 +268,7 @@ class GDel3D {
     lk.resize(par::unique(ctx_, lp, static_cast<std::size_t>(3 * ni)));
     if (std::getenv("GDEL_SPLAY_DEBUG"))
       std::fprintf(stderr, "gdel3d: %lld failed stars, %lld tets around them\n", (long long)k, (long long)ni);
+    par::mark(ctx_, "repair: failed stars' tets, link sets");
     // stars s0 + j, j in [0, k): group j of lk and of inc are the same vertex (both sorted);
     // convexified from their form in T by Flip-Flop, rebuilt where that gives up
     // (GDEL_STAR_BUILD=rebuild: all rebuilt, for comparison)
@@ -317,6 +318,7 @@ class GDel3D {
       const bool in_t = lo < ihp[j + 1] && hip[lo] == h && lop[lo] == l;
       set_kind(sv.state[sv.begin[s] + i], in_t ? kTriChecked : kTriNew);
     });
+    par::mark(ctx_, "repair: failed stars' T check");
   }
 
   // An oriented link triangle rotated so that its smallest vertex comes first: equal

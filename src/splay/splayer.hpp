@@ -25,6 +25,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <limits>
+#include <memory>
 #include <cstdint>
 #include <stdexcept>
 #include <atomic>
@@ -402,6 +404,9 @@ class Splayer {
     } else {
       par::fill(ctx_, sdp, static_cast<std::size_t>(k), std::int32_t(-1));
     }
+    // (GDEL_PROFILE: the star builds' steps under their own names, from gDel3D's failed
+    // stars and from the rounds' pulls alike)
+    par::mark(ctx_, "stars: groups, order, seeds");
     // On the CUDA backend a star with a huge working set (a point on a coplanar hull face:
     // thousands of link vertices, every predicate degenerate) would be built by one GPU
     // thread at tens of µs per exact, symbolically perturbed test (bench/RESULTS.md
@@ -415,6 +420,7 @@ class Splayer {
     const std::vector<I64> huge = host_pick(k, host_min, host_gate(), [=] GDEL_LAMBDA(I64 j) { return lhp[j + 1] - lhp[j]; });
     HostJobs hjobs;
     if (!huge.empty()) hjobs = host_jobs(huge, s0, lhp, rmp, gvp, ov, lp, sdp);
+    par::mark(ctx_, "stars: host jobs' inputs");
     ss_.host_built += static_cast<I64>(huge.size());
     // The kernel takes the stars largest working set first (most_first; Flip-Flop's loop
     // runs in lockstep with the warp's other stars: par::Lockstep; bench/RESULTS.md, session 44).
@@ -433,6 +439,7 @@ class Splayer {
       up[j] = gk - rmp[j];
     }, g.int_all);
     if (!huge.empty()) run_host_jobs(hjobs, gp, up, ffp, ff_cap);  // while the kernel runs; then writes back
+    par::mark(ctx_, "stars: build (kernel, host jobs)");
     throw_if_error("building stars");
     if constexpr (Seed::enabled) {
       const I64 ff = par::reduce_sum(ctx_, ffp, static_cast<std::size_t>(k));
@@ -443,6 +450,7 @@ class Splayer {
     }
     gone = pack_pairs(gp, rmp, up, k);
     certify_deaths();
+    par::mark(ctx_, "stars: gone pairs, deaths");
     return s0;
   }
 
@@ -519,6 +527,63 @@ class Splayer {
       if (sizes[i] > min) out.push_back(idx[i]);
     return out;
   }
+  // Many small copies between host and backend memory, one copy each way for all of them
+  // (each copy synchronizes, ≈ 25 µs on the H200: the sphere's 61 host jobs spent ≈ 8 ms
+  // on their inputs one copy at a time; bench/RESULTS.md, session 46). A piece: count
+  // items between backend memory `dev` and host memory `host`.
+  struct Piece {
+    const void* dev;
+    void* host;
+    std::size_t bytes;
+  };
+  template <class T>
+  static Piece piece(const T* dev, const T* host, std::size_t count) {  // (host written only to_host)
+    return Piece{dev, const_cast<T*>(host), count * sizeof(T)};
+  }
+  // to_host: every piece's backend bytes to its host memory; else the other way.
+  void copy_pieces(const std::vector<Piece>& ps, bool to_host) {
+    std::vector<Piece> p;
+    for (const Piece& x : ps)
+      if (x.bytes) p.push_back(x);
+    if (p.empty()) return;
+    const std::size_t n = p.size();
+    // one buffer: n + 1 offsets, n addresses, then (the other way) the bytes
+    std::vector<I64> head(2 * n + 1);
+    I64 total = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      head[i] = total;
+      total += static_cast<I64>(p[i].bytes);
+      head[n + 1 + i] = static_cast<I64>(reinterpret_cast<std::uintptr_t>(p[i].dev));
+    }
+    head[n] = total;
+    const std::size_t hb = head.size() * sizeof(I64);
+    std::vector<std::uint8_t> staged(hb + (to_host ? 0 : static_cast<std::size_t>(total)));
+    std::memcpy(staged.data(), head.data(), hb);
+    if (!to_host)
+      for (std::size_t i = 0; i < n; ++i) std::memcpy(staged.data() + hb + head[i], p[i].host, p[i].bytes);
+    Buffer<std::uint8_t, B> d(ctx_);
+    d.assign(staged);
+    const I64* op = reinterpret_cast<const I64*>(d.data());
+    const I64* ap = op + n + 1;
+    const I64 k = static_cast<I64>(n);
+    if (to_host) {
+      Buffer<std::uint8_t, B> packed(ctx_, static_cast<std::size_t>(total));
+      std::uint8_t* pp = packed.data();
+      par::parallel_for(ctx_, total, [=] GDEL_LAMBDA(I64 x) {
+        const I64 i = group_of(op, k, x);
+        pp[x] = reinterpret_cast<const std::uint8_t*>(static_cast<std::uintptr_t>(ap[i]))[x - op[i]];
+      });
+      const std::vector<std::uint8_t> h = packed.to_host();
+      for (std::size_t i = 0; i < n; ++i) std::memcpy(p[i].host, h.data() + head[i], p[i].bytes);
+    } else {
+      const std::uint8_t* src = d.data() + hb;
+      par::parallel_for(ctx_, total, [=] GDEL_LAMBDA(I64 x) {
+        const I64 i = group_of(op, k, x);
+        reinterpret_cast<std::uint8_t*>(static_cast<std::uintptr_t>(ap[i]))[x - op[i]] = src[x];
+      });
+      ctx_.synchronize();  // (as a copy from the host would: the caller's data may go)
+    }
+  }
   // A star worked on the host (its group j, star s, slots [begin, begin + cap), room for
   // gone pairs [g0, g1) of the round's list, used of it), and its write-back.
   struct HostStar {
@@ -529,15 +594,17 @@ class Splayer {
     std::vector<std::uint8_t> S;
     std::vector<U64> gone;
   };
-  void write_back(const HostStar& J, U64* gp, I64* up) {
+  // A host job's results, as pieces for one copy_pieces to the backend (the job must
+  // outlive that copy).
+  void write_back(const HostStar& J, U64* gp, I64* up, std::vector<Piece>& out) {
     const StarView sv = view();
-    put(sv.tri + J.begin, J.T.data(), J.T.size());
-    put(sv.state + J.begin, J.S.data(), J.S.size());
-    put(sv.count + J.s, &J.count, 1);
-    if (J.killer >= 0) put(sv.killer + J.s, &J.killer, 1);
-    if (J.used > 0) put(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used));
-    put(up + J.j, &J.used, 1);
-    if (J.err != 0) put(error_.data(), &J.err, 1);
+    out.push_back(piece(sv.tri + J.begin, J.T.data(), J.T.size()));
+    out.push_back(piece(sv.state + J.begin, J.S.data(), J.S.size()));
+    out.push_back(piece(sv.count + J.s, &J.count, 1));
+    if (J.killer >= 0) out.push_back(piece(sv.killer + J.s, &J.killer, 1));
+    if (J.used > 0) out.push_back(piece(gp + J.g0, J.gone.data(), static_cast<std::size_t>(J.used)));
+    out.push_back(piece(up + J.j, &J.used, 1));
+    if (J.err != 0) out.push_back(piece(error_.data(), &J.err, 1));
   }
   struct HostJob : HostStar {
     I64 a = 0, b = 0;
@@ -546,47 +613,70 @@ class Splayer {
     std::vector<U64> keys;
   };
   using HostJobs = std::vector<HostJob>;
-  // The points (and weights, and ids) in host memory for the host jobs, copied once per
-  // splayer (they do not change while it runs).
+  // The points (and weights, and SoS ids) in host memory for the host jobs, at their
+  // internal ids: arrays of n + 1 entries allocated once per splayer and left
+  // uninitialised (pages never written cost nothing), into which fetch_points copies only
+  // the points the jobs read. Copying every point took ≈ 20 ms at 10^6 points on the H200
+  // (grid and sphere alike: bench/RESULTS.md, session 46), for jobs that read a few
+  // thousand.
   struct HostGeo {
-    std::vector<double> xyz, w;
-    std::vector<std::int64_t> sid;
+    std::unique_ptr<double[]> xyz, w;
+    std::unique_ptr<std::int64_t[]> sid;
     flip::Geo g{};
-    bool ready = false;
   };
   const flip::Geo& host_geo() {
     HostGeo& H = host_geo_;
-    if (H.ready) return H.g;
+    if (H.xyz) return H.g;
     const std::size_t np = static_cast<std::size_t>(g_.inf) + 1;  // n points and K
-    H.xyz.resize(3 * np);
-    H.sid.resize(np);
-    get(H.xyz.data(), g_.xyz, 3 * np);
-    get(H.sid.data(), g_.sid, np);
+    H.xyz.reset(new double[3 * np]);
+    H.sid.reset(new std::int64_t[np]);
     H.g = g_;
-    H.g.xyz = H.xyz.data();
-    H.g.sid = H.sid.data();
+    H.g.xyz = H.xyz.get();
+    H.g.sid = H.sid.get();
     if (g_.w) {
-      H.w.resize(np);
-      get(H.w.data(), g_.w, np);
-      H.g.w = H.w.data();
+      H.w.reset(new double[np]);
+      H.g.w = H.w.get();
     }
-    H.ready = true;
+    if (std::getenv("GDEL_HOST_STAR_MIN")) {  // tests: a point no fetch brought is NaN, not a stale value
+      std::fill_n(H.xyz.get(), 3 * np, std::numeric_limits<double>::quiet_NaN());
+      if (H.w) std::fill_n(H.w.get(), np, std::numeric_limits<double>::quiet_NaN());
+    }
     return H.g;
   }
-  // Runs job(h) for h in [0, n) on the host's threads (at most one per job), the calling
-  // thread included.
-  template <class T>
-  void get(T* dst, const T* src, std::size_t count) {
-    par::detail::Memory<B>::to_host(ctx_, dst, src, count * sizeof(T));
-  }
-  template <class T>
-  void put(T* dst, const T* src, std::size_t count) {
-    par::detail::Memory<B>::from_host(ctx_, dst, src, count * sizeof(T));
+  // Brings the points ids (any order, repeats allowed; ∞'s K is always added) into
+  // host_geo's arrays: gathered on the backend, one copy, scattered on the host.
+  void fetch_points(std::vector<vid_t> ids) {
+    host_geo();
+    ids.push_back(g_.inf);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    constexpr int kStride = 5;  // x, y, z, the SoS id's bits, the weight
+    Buffer<vid_t, B> di(ctx_);
+    di.assign(ids);
+    Buffer<double, B> pk(ctx_, kStride * ids.size());
+    const vid_t* dp = di.data();
+    double* pp = pk.data();
+    const flip::Geo g = g_;
+    par::parallel_for(ctx_, static_cast<I64>(ids.size()), [=] GDEL_LAMBDA(I64 i) {
+      const vid_t v = dp[i];
+      double* o = pp + kStride * i;
+      for (int c = 0; c < 3; ++c) o[c] = g.p(v)[c];
+      std::memcpy(o + 3, g.sid + v, sizeof(double));
+      o[4] = g.w ? g.w[v] : 0.0;
+    });
+    const std::vector<double> h = pk.to_host();
+    HostGeo& H = host_geo_;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const std::size_t v = static_cast<std::size_t>(ids[i]);
+      const double* o = h.data() + kStride * i;
+      for (int c = 0; c < 3; ++c) H.xyz[3 * v + c] = o[c];
+      std::memcpy(&H.sid[v], o + 3, sizeof(double));
+      if (H.w) H.w[v] = o[4];
+    }
   }
   HostJobs host_jobs(const std::vector<I64>& huge, I64 s0, const I64* lhp, const I64* rmp, const vid_t* gvp,
                      const vid_t* ov, const U64* lp, const std::int32_t* sdp) {
     HostJobs H(huge.size());
-    host_geo();
     const StarView sv = view();
     // each job's scalars, gathered on the backend and copied in one piece
     const std::vector<I64> f = gather_host_fields(huge, [=] GDEL_LAMBDA(I64 j, I64* o) {
@@ -600,6 +690,7 @@ class Splayer {
       o[6] = gvp[j];
       o[7] = sdp[j];
     });
+    std::vector<Piece> in;  // each job's arrays, in one copy
     for (std::size_t h = 0; h < huge.size(); ++h) {
       HostJob& J = H[h];
       const I64* o = f.data() + kHostFields * h;
@@ -613,18 +704,27 @@ class Splayer {
       J.cap = static_cast<std::int32_t>(o[5]);
       J.me = static_cast<vid_t>(o[6]);
       J.pts.resize(static_cast<std::size_t>(J.b - J.a));
-      get(J.pts.data(), ov + J.a, J.pts.size());
+      in.push_back(piece(ov + J.a, J.pts.data(), J.pts.size()));
       J.T.resize(static_cast<std::size_t>(J.cap));
       J.S.assign(static_cast<std::size_t>(J.cap), std::uint8_t(kTriFree));
       J.seeded = static_cast<std::int32_t>(o[7]);
       if (J.seeded >= 0) {  // the seed star (its triangles; the rest is scratch)
-        get(J.T.data(), static_cast<const Tri*>(sv.tri + J.begin), static_cast<std::size_t>(J.seeded));
-        get(J.S.data(), static_cast<const std::uint8_t*>(sv.state + J.begin), static_cast<std::size_t>(J.seeded));
+        in.push_back(piece(static_cast<const Tri*>(sv.tri + J.begin), J.T.data(), static_cast<std::size_t>(J.seeded)));
+        in.push_back(piece(static_cast<const std::uint8_t*>(sv.state + J.begin), J.S.data(),
+                           static_cast<std::size_t>(J.seeded)));
         J.keys.resize(J.pts.size());
-        get(J.keys.data(), lp + J.a, J.keys.size());
+        in.push_back(piece(lp + J.a, J.keys.data(), J.keys.size()));
       }
       J.gone.resize(static_cast<std::size_t>(std::max<I64>(J.g1 - J.g0, 1)));
     }
+    copy_pieces(in, true);
+    // the points a build reads: its working set (the seed's vertices among them) and its own
+    std::vector<vid_t> ids;
+    for (const HostJob& J : H) {
+      ids.insert(ids.end(), J.pts.begin(), J.pts.end());
+      ids.push_back(J.me);
+    }
+    fetch_points(std::move(ids));
     return H;
   }
   // kHostFields scalars per host job: field(j, out) writes those of group huge[h] to
@@ -658,10 +758,12 @@ class Splayer {
                      (long long)J.s, J.pts.size(), J.seeded, J.count, J.ff ? "Flip-Flop" : "rebuilt",
                      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     });
+    std::vector<Piece> out;
     for (HostJob& J : H) {
-      write_back(J, gp, up);
-      put(ffp + J.j, &J.ff, 1);
+      write_back(J, gp, up, out);
+      out.push_back(piece(ffp + J.j, &J.ff, 1));
     }
+    copy_pieces(out, false);
   }
 
   // insert_round's huge stars (indices j of its request groups) on the host: the star's
@@ -674,7 +776,6 @@ class Splayer {
   };
   std::vector<InsertJob> insert_jobs(const std::vector<I64>& huge, const Buffer<U64, B>& req,
                                      const Buffer<I64, B>& heads, I64 nh, const Buffer<I64, B>& room) {
-    host_geo();
     const StarView sv = view();
     const I64 n = static_cast<I64>(req.size());
     std::vector<InsertJob> jobs(huge.size());
@@ -695,14 +796,14 @@ class Splayer {
       o[6] = rmp[j];
       o[7] = rmp[j + 1];
     });
+    std::vector<Piece> in;  // each job's arrays, in one copy
     for (std::size_t h = 0; h < huge.size(); ++h) {
       InsertJob& J = jobs[h];
       const I64* o = f.data() + kHostFields * h;
       J.j = huge[h];
       const I64 a = o[0], b = o[1];
       J.req.resize(static_cast<std::size_t>(b - a));
-      get(J.req.data(), req.data() + a, J.req.size());
-      J.me = key_target(J.req[0]);
+      in.push_back(piece(req.data() + a, J.req.data(), J.req.size()));
       J.s = o[2];
       J.begin = o[3];
       J.cap = static_cast<std::int32_t>(o[4]);
@@ -711,10 +812,21 @@ class Splayer {
       J.g1 = o[7];
       J.T.resize(static_cast<std::size_t>(J.cap));
       J.S.resize(static_cast<std::size_t>(J.cap));
-      get(J.T.data(), static_cast<const Tri*>(sv.tri + J.begin), J.T.size());
-      get(J.S.data(), static_cast<const std::uint8_t*>(sv.state + J.begin), J.S.size());
+      in.push_back(piece(static_cast<const Tri*>(sv.tri + J.begin), J.T.data(), J.T.size()));
+      in.push_back(piece(static_cast<const std::uint8_t*>(sv.state + J.begin), J.S.data(), J.S.size()));
       J.gone.resize(static_cast<std::size_t>(std::max<I64>(J.g1 - J.g0, 1)));
     }
+    copy_pieces(in, true);
+    for (InsertJob& J : jobs) J.me = key_target(J.req[0]);
+    // the points an insertion reads: the star's own, its triangles' and the inserted ones
+    std::vector<vid_t> ids;
+    for (const InsertJob& J : jobs) {
+      ids.push_back(J.me);
+      for (std::int32_t q = 0; q < J.count; ++q)
+        for (int c = 0; c < 3; ++c) ids.push_back(J.T[static_cast<std::size_t>(q)].v[c]);
+      for (const U64 key : J.req) ids.push_back(key_vertex(key));
+    }
+    fetch_points(std::move(ids));
     return jobs;
   }
   void run_insert_jobs(std::vector<InsertJob>& jobs, U64* gp, I64* up) {
@@ -735,10 +847,12 @@ class Splayer {
       }
       J.used = k;
     });
+    std::vector<Piece> out;
     for (InsertJob& J : jobs) {
       ss_.host_insertions += J.inserted;
-      write_back(J, gp, up);
+      write_back(J, gp, up, out);
     }
+    copy_pieces(out, false);
   }
 
   // Runs splaying rounds from the given requests (keys pair_key(target, vertex), any
@@ -953,6 +1067,35 @@ class Splayer {
     pull_(miss);
   }
 
+  static constexpr std::int32_t kFilterScanMax = 256;
+  // The link keys pair_key(star vertex, link vertex) of the live stars of more than `min`
+  // triangles, sorted, unique (one thread per triangle).
+  Buffer<U64, B> link_keys_above(std::int32_t min) {
+    const StarView sv = view();
+    Buffer<I64, B> bs(ctx_, static_cast<std::size_t>(std::max<I64>(nst_, 1)));
+    const std::size_t nbs = par::select_indices(ctx_, static_cast<std::size_t>(nst_), bs.data(), [=] GDEL_LAMBDA(I64 s) {
+      return sv.count[s] > min && !sv.dead(s);
+    });
+    Buffer<U64, B> keys(ctx_);
+    if (nbs == 0) return keys;
+    const I64 m = static_cast<I64>(nbs);
+    const I64* sp = bs.data();
+    Buffer<I64, B> off(ctx_, static_cast<std::size_t>(m + 1));
+    I64* op = off.data();
+    par::parallel_for(ctx_, m, [=] GDEL_LAMBDA(I64 j) { op[j] = sv.count[sp[j]]; });
+    const I64 nt = par::counts_to_offsets(ctx_, op, static_cast<std::size_t>(m));
+    keys.resize(static_cast<std::size_t>(3 * nt));
+    U64* kp = keys.data();
+    par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 x) {
+      const I64 j = group_of(op, m, x);
+      const I64 s = sp[j];
+      const Tri& t = sv.tri[sv.begin[s] + (x - op[j])];
+      for (int c = 0; c < 3; ++c) kp[3 * x + c] = pair_key(sv.vert[s], t.v[c]);
+    });
+    par::sort_keys(ctx_, kp, static_cast<std::size_t>(3 * nt));
+    keys.resize(par::unique(ctx_, kp, static_cast<std::size_t>(3 * nt)));
+    return keys;
+  }
   // Drops requests already tried (history) or whose vertex is in the target's link;
   // compacts req; returns the number left.
   I64 filter(Buffer<U64, B>& req) {
@@ -963,11 +1106,19 @@ class Splayer {
     const I64 nh = static_cast<I64>(history_.size());
     const std::int32_t* so = star_of_.data();
     const StarView sv = view();
+    // The link test of a star of more than kFilterScanMax triangles (a point on a coplanar
+    // hull face: thousands) is a binary search in its link keys (star vertex << 32 | link
+    // vertex, those stars' only, sorted), not one thread's scan of every triangle per
+    // request (the grid's filter: bench/RESULTS.md, session 46).
+    const Buffer<U64, B> big = link_keys_above(kFilterScanMax);
+    const U64* bp = big.data();
+    const I64 nb = static_cast<I64>(big.size());
     Buffer<U64, B> out(ctx_, static_cast<std::size_t>(n));
     const std::size_t k = par::copy_if(ctx_, rp, out.data(), static_cast<std::size_t>(n), [=] GDEL_LAMBDA(U64 key) {
       if (sorted_contains(hp, nh, key)) return false;
       const std::int32_t s = so[key_target(key)];
       if (sv.dead(s)) return false;  // a dead star takes no more points
+      if (sv.count[s] > kFilterScanMax) return !sorted_contains(bp, nb, key);
       return !star_has(sv.tri + sv.begin[s], sv.count[s], key_vertex(key));
     });
     out.resize(k);
@@ -1007,6 +1158,8 @@ class Splayer {
       np[s] = 2 * (cnt[s] + 2 * static_cast<std::int32_t>(b - a)) + 4;
     });
     ensure_capacity(np);
+    // (GDEL_PROFILE: the round's steps under their own names; the rest is "splay: insert round")
+    par::mark(ctx_, "insert: groups, capacity");
     if (debug_) ss_.critical += most_per_star(hp, static_cast<I64>(nh), n);
     // room for gone pairs: every link vertex and every insertion at most once
     Buffer<I64, B> room(ctx_, static_cast<std::size_t>(nh + 1));
@@ -1036,6 +1189,7 @@ class Splayer {
       return static_cast<I64>(cnt[so[key_target(rp[hp[j]])]]);
     });
     if (!huge.empty()) ijobs = insert_jobs(huge, req, heads, static_cast<I64>(nh), room);
+    par::mark(ctx_, "insert: host jobs' inputs");
     // (in memory order: most insertions first, as build_stars takes its stars, ran 55 -> 95
     // ms on the sphere: bench/RESULTS.md, session 44)
     par::for_each_with_scratch(ctx_, static_cast<I64>(nh), geom::kPredicateWork, [=] GDEL_LAMBDA(I64 j, auto work) {
@@ -1060,6 +1214,7 @@ class Splayer {
       up[j] = k - rmp[j];
     }, g.int_all);
     if (!ijobs.empty()) run_insert_jobs(ijobs, gp, up);  // while the kernel runs; then writes back
+    par::mark(ctx_, "insert: kernel, host jobs");
     throw_if_error("insertion");
     gone = pack_pairs(gp, rmp, up, static_cast<I64>(nh));
     certify_deaths();
@@ -1155,6 +1310,9 @@ class Splayer {
       if (kr > 0) pull_targets(revc);
       const std::int32_t* so = star_of_.data();
       const StarView sv = view();
+      const Buffer<U64, B> big = link_keys_above(kFilterScanMax);  // (as in filter)
+      const U64* bp = big.data();
+      const I64 nb = static_cast<I64>(big.size());
       gone.resize(static_cast<std::size_t>(n0));
       const std::size_t kg = par::copy_if(ctx_, ga, gone.data(), static_cast<std::size_t>(n0), [=] GDEL_LAMBDA(U64 k) {
         // a dead star needs no proofs: its certificate reaches every star holding it
@@ -1162,7 +1320,9 @@ class Splayer {
         const vid_t v = key_vertex(k);
         if (v == inf) return true;
         const std::int32_t st = so[v];
-        return st >= 0 && !sv.dead(st) && star_has(sv.tri + sv.begin[st], sv.count[st], key_target(k));
+        if (st < 0 || sv.dead(st)) return false;
+        if (sv.count[st] > kFilterScanMax) return sorted_contains(bp, nb, pair_key(v, key_target(k)));
+        return star_has(sv.tri + sv.begin[st], sv.count[st], key_target(k));
       });
       gone.resize(kg);
     }
