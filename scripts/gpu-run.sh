@@ -1319,6 +1319,14 @@ for r in csv.reader(sys.stdin):
     GDEL_PROFILE=1 bench s46b_prof 120 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     OUT="$out/t" bash "$0" s44t
     ;;
+  s46e)  # session 46: the GPU tests in the binaries' folder (s44t's list), then s46a's medians and profiles
+    for t in gpu_predicates gpu_gflip3d gpu_gdel3d gpu_greg3d gpu_gstar4d gpu_hostile; do
+      [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"
+    done
+    bench s46e_m6 120 --dist grid,sphere,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s46e_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 GDEL_SPLAY_DEBUG=1 bench s46e_prof 120 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -288,9 +288,13 @@ class Splayer {
     const std::uint8_t* osp = state_.data();
     I64* bp = begin_.data();
     const std::int32_t* np = count_.data();
-    par::parallel_for(ctx_, nst_, [=] GDEL_LAMBDA(I64 s) {
+    // 32 threads per star, side by side over its slots (one thread per star copied each
+    // star's slots alone: ≈ 28 ms of the sphere's rounds; bench/RESULTS.md, session 46)
+    constexpr I64 kLanes = 32;
+    par::parallel_for(ctx_, kLanes * nst_, [=] GDEL_LAMBDA(I64 x) {
+      const I64 s = x / kLanes;
       const I64 b = bp[s], d = op[s];
-      for (std::int32_t i = 0; i < gp[s]; ++i) {
+      for (std::int32_t i = static_cast<std::int32_t>(x % kLanes); i < gp[s]; i += static_cast<std::int32_t>(kLanes)) {
         if (i < np[s]) {
           ntp[d + i] = otp[b + i];
           nsp[d + i] = osp[b + i];
@@ -482,10 +486,11 @@ class Splayer {
     return 4 * static_cast<std::size_t>(std::max(1, omp_get_max_threads()));
   }
   // The host path is taken only where a star exceeds this (working-set points; twice as
-  // many triangles for the insertions): it first copies every point to the host
-  // (host_geo), 320 MB at 10^7 points, which the uniform generator's few stars above 48
+  // many triangles for the insertions). It was set when the first job copied every point
+  // to the host, 320 MB at 10^7 points, which the uniform generator's few stars above 48
   // did not repay: its repair took 0.31 s instead of 0.08, 3.6 s instead of 1.1 at 10^8
-  // (bench/RESULTS.md, session 20). GDEL_HOST_STAR_GATE=N sets it (tests); with
+  // (bench/RESULTS.md, session 20); the jobs now fetch only the points they read
+  // (fetch_points, session 46), and the gate is not re-measured. GDEL_HOST_STAR_GATE=N sets it (tests); with
   // GDEL_HOST_STAR_MIN set and no GDEL_HOST_STAR_GATE, no gate.
   static constexpr I64 kHostGate = 128;
   static I64 host_gate() {
