@@ -585,8 +585,7 @@ class Splayer {
       par::parallel_for(ctx_, total, [=] GDEL_LAMBDA(I64 x) {
         const I64 i = group_of(op, k, x);
         reinterpret_cast<std::uint8_t*>(static_cast<std::uintptr_t>(ap[i]))[x - op[i]] = src[x];
-      });
-      ctx_.synchronize();  // (as a copy from the host would: the caller's data may go)
+      });  // (the pieces' host data was staged by the upload: the caller may free it now)
     }
   }
   // A star worked on the host (its group j, star s, slots [begin, begin + cap), room for
@@ -1072,7 +1071,24 @@ class Splayer {
     pull_(miss);
   }
 
-  static constexpr std::int32_t kFilterScanMax = 256;
+  // Whether star s's link holds vertex x (filter, proofs): a scan of its triangles, or for
+  // a star of more than kLinkScanMax triangles (a point on a coplanar hull face:
+  // thousands) a binary search in `big`, the sorted link keys of such stars
+  // (link_keys_above), not one thread's scan of every triangle per query (the grid's
+  // filter: bench/RESULTS.md, session 46).
+  static constexpr std::int32_t kLinkScanMax = 256;
+  struct LinkQuery {
+    StarView sv;
+    const U64* big;
+    I64 nb;
+    GDEL_HD bool has(std::int32_t s, vid_t x) const {
+      if (sv.count[s] > kLinkScanMax) return sorted_contains(big, nb, pair_key(sv.vert[s], x));
+      return star_has(sv.tri + sv.begin[s], sv.count[s], x);
+    }
+  };
+  LinkQuery link_query(const Buffer<U64, B>& big) {
+    return LinkQuery{view(), big.data(), static_cast<I64>(big.size())};
+  }
   // The link keys pair_key(star vertex, link vertex) of the live stars of more than `min`
   // triangles, sorted, unique (one thread per triangle).
   Buffer<U64, B> link_keys_above(std::int32_t min) {
@@ -1111,20 +1127,14 @@ class Splayer {
     const I64 nh = static_cast<I64>(history_.size());
     const std::int32_t* so = star_of_.data();
     const StarView sv = view();
-    // The link test of a star of more than kFilterScanMax triangles (a point on a coplanar
-    // hull face: thousands) is a binary search in its link keys (star vertex << 32 | link
-    // vertex, those stars' only, sorted), not one thread's scan of every triangle per
-    // request (the grid's filter: bench/RESULTS.md, session 46).
-    const Buffer<U64, B> big = link_keys_above(kFilterScanMax);
-    const U64* bp = big.data();
-    const I64 nb = static_cast<I64>(big.size());
+    const Buffer<U64, B> big = link_keys_above(kLinkScanMax);
+    const LinkQuery lq = link_query(big);
     Buffer<U64, B> out(ctx_, static_cast<std::size_t>(n));
     const std::size_t k = par::copy_if(ctx_, rp, out.data(), static_cast<std::size_t>(n), [=] GDEL_LAMBDA(U64 key) {
       if (sorted_contains(hp, nh, key)) return false;
       const std::int32_t s = so[key_target(key)];
       if (sv.dead(s)) return false;  // a dead star takes no more points
-      if (sv.count[s] > kFilterScanMax) return !sorted_contains(bp, nb, key);
-      return !star_has(sv.tri + sv.begin[s], sv.count[s], key_vertex(key));
+      return !lq.has(s, key_vertex(key));
     });
     out.resize(k);
     req = std::move(out);
@@ -1315,9 +1325,8 @@ class Splayer {
       if (kr > 0) pull_targets(revc);
       const std::int32_t* so = star_of_.data();
       const StarView sv = view();
-      const Buffer<U64, B> big = link_keys_above(kFilterScanMax);  // (as in filter)
-      const U64* bp = big.data();
-      const I64 nb = static_cast<I64>(big.size());
+      const Buffer<U64, B> big = link_keys_above(kLinkScanMax);
+      const LinkQuery lq = link_query(big);
       gone.resize(static_cast<std::size_t>(n0));
       const std::size_t kg = par::copy_if(ctx_, ga, gone.data(), static_cast<std::size_t>(n0), [=] GDEL_LAMBDA(U64 k) {
         // a dead star needs no proofs: its certificate reaches every star holding it
@@ -1325,9 +1334,7 @@ class Splayer {
         const vid_t v = key_vertex(k);
         if (v == inf) return true;
         const std::int32_t st = so[v];
-        if (st < 0 || sv.dead(st)) return false;
-        if (sv.count[st] > kFilterScanMax) return sorted_contains(bp, nb, pair_key(v, key_target(k)));
-        return star_has(sv.tri + sv.begin[st], sv.count[st], key_target(k));
+        return st >= 0 && !sv.dead(st) && lq.has(st, key_target(k));
       });
       gone.resize(kg);
     }
