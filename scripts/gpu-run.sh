@@ -1327,6 +1327,50 @@ for r in csv.reader(sys.stdin):
     bench s46e_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     GDEL_PROFILE=1 GDEL_SPLAY_DEBUG=1 bench s46e_prof 120 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s47a)  # session 47: where the grid's flip loop costs twice uniform's for the same flips: per-round traces
+          # and step profiles of grid and uniform 10^6, medians of 5, the small-iteration knobs on the grid
+          # (GDEL_TEAM_MAX, GDEL_TEAM_PROPOSE), the exact passes' kernels on the grid (ncu)
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s47a_prof 90 --dist grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s47a_m6 90 --dist grid,uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_TEAM_MAX=0 bench s47a_team0 60 --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_TEAM_MAX=8192 bench s47a_team8k 60 --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_TEAM_PROPOSE=team bench s47a_pteam 60 --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ncu_kernels s47a 'flip_iteration|propose_spread' gdel-bench --dist grid --n 1000000 \
+      --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    ;;
+  s47b|s47c|s47d)  # session 47: the small-integer stage in the fast forms (s47c: its second step, the h column
+          # and the walks out of line; s47d: gFlip3D only): the GPU tests it touches (in the binaries' folder), then
+          # oldnew against s47a's binary (gdel-bench-old)
+    for t in gpu_predicates gpu_gflip3d gpu_gdel3d; do
+      [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"
+    done
+    oldnew "$plan"
+    ;;
+  s47e)  # session 47: where the grid's small launches wait (ncu stall reasons per issued instruction, mean over
+          # 20 launches each): propose_spread, and the proposals' scratch-free exact pass
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    for k in propose_spread 'exact_after_fast.*flip_iteration'; do
+      tag=s47e_$(echo "$k" | tr -c 'a-z\n' '_' | cut -c1-16)
+      step "$tag" 150 "$ncu" --clock-control none --kernel-name-base mangled -k "regex:$k" --launch-skip 40 \
+        --launch-count 20 --csv --metrics \
+        "gpu__time_duration.sum,smsp__inst_executed.sum,regex:smsp__average_warps_issue_stalled_.*_per_issue_active.ratio" \
+        "$bin/gdel-bench" --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+      python3 - "/tmp/gpu-run-$tag.log" "$k" <<'PY' | tee -a "$out/summary.txt"
+import collections, csv, sys
+rows = [l for l in open(sys.argv[1], errors="replace") if l.startswith('"')]
+acc, cnt = collections.defaultdict(float), collections.Counter()
+for r in csv.DictReader(rows):
+    try:
+        acc[r["Metric Name"]] += float(r["Metric Value"].replace(",", ""))
+        cnt[r["Metric Name"]] += 1
+    except (KeyError, ValueError):
+        pass
+print(f"== {sys.argv[2]}: mean over {max(cnt.values(), default=0)} launches (grid 10^6)")
+for m, v in sorted(acc.items(), key=lambda x: -x[1] / max(cnt[x[0]], 1))[:14]:
+    print(f"   {v / cnt[m]:14.2f}  {m}")
+PY
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -20,9 +20,17 @@ GDEL_HD GDEL_FORCEINLINE int filter_decide(double det, double perm, double thres
 }
 }  // namespace detail
 
+// What a filter evaluated, for the small-integer stage (predicates.hpp): its determinant
+// as computed, and the largest absolute coordinate difference it formed. To be read only
+// when the filter answered kUncertain.
+struct FilterValue {
+  double det = 0;
+  double span = 0;
+};
+
 // orient3d(a,b,c,d) = sign det[b-a, c-a, d-a]  (N = 8, T = 2^-815).
 GDEL_HD inline int orient3d_filter(const double* a, const double* b, const double* c,
-                                   const double* d) {
+                                   const double* d, FilterValue* out = nullptr) {
   using namespace fp;
   const double ux = sub(b[0], a[0]), uy = sub(b[1], a[1]), uz = sub(b[2], a[2]);
   const double vx = sub(c[0], a[0]), vy = sub(c[1], a[1]), vz = sub(c[2], a[2]);
@@ -36,7 +44,17 @@ GDEL_HD inline int orient3d_filter(const double* a, const double* b, const doubl
   const double py = add(mul(abs(vz), abs(wx)), mul(abs(vx), abs(wz)));
   const double pz = add(mul(abs(vx), abs(wy)), mul(abs(vy), abs(wx)));
   const double perm = add(add(mul(abs(ux), px), mul(abs(uy), py)), mul(abs(uz), pz));
-  return detail::filter_decide(det, perm, bounds::kOrient3dThreshold, bounds::kOrient3dRoundings);
+  const int s = detail::filter_decide(det, perm, bounds::kOrient3dThreshold, bounds::kOrient3dRoundings);
+  if (out && s == kUncertain) {
+    auto mx3 = [](double x, double y, double z) {
+      const double m = abs(x) > abs(y) ? abs(x) : abs(y);
+      return m > abs(z) ? m : abs(z);
+    };
+    const double su = mx3(ux, uy, uz), sv = mx3(vx, vy, vz), sw = mx3(wx, wy, wz);
+    const double m = su > sv ? su : sv;
+    *out = {det, m > sw ? m : sw};
+  }
+  return s;
 }
 
 namespace detail {
@@ -46,7 +64,7 @@ namespace detail {
 //   l_p = |p - e|^2 - (w_p - w_e)   (w ignored when !Weighted)
 //         = l_a M(bcd) - l_b M(acd) + l_c M(abd) - l_d M(abc),  M = 3x3 det of differences.
 template <bool Weighted>
-GDEL_HD GDEL_FORCEINLINE int lifted_filter(const double* const* p, const double* w) {
+GDEL_HD GDEL_FORCEINLINE int lifted_filter(const double* const* p, const double* w, FilterValue* out = nullptr) {
   using namespace fp;
   const double* e = p[4];
   double x[4], y[4], z[4], l[4], ax[4], ay[4], az[4], la[4];
@@ -92,6 +110,10 @@ GDEL_HD GDEL_FORCEINLINE int lifted_filter(const double* const* p, const double*
   const double ub = mul(L, pb);
   const int quick = filter_decide(det, add(add(ub, ub), add(ub, ub)), threshold, roundings);
   if (quick != kUncertain) return quick;
+  if (out) {
+    const double xy = X > Y ? X : Y;
+    *out = {det, xy > Z ? xy : Z};
+  }
   // Then the permanent P^ itself: the same tree on the absolute values.
   double q[4][4];
   for (int i = 0; i < 4; ++i)
@@ -107,9 +129,9 @@ GDEL_HD GDEL_FORCEINLINE int lifted_filter(const double* const* p, const double*
 // insphere(a,b,c,d,e) > 0 iff e is strictly inside the circumsphere of positive abcd
 // (N = 16, T = 2^-408).
 GDEL_HD inline int insphere_filter(const double* a, const double* b, const double* c,
-                                   const double* d, const double* e) {
+                                   const double* d, const double* e, FilterValue* out = nullptr) {
   const double* p[5] = {a, b, c, d, e};
-  return detail::lifted_filter<false>(p, nullptr);
+  return detail::lifted_filter<false>(p, nullptr, out);
 }
 
 // power(a,b,c,d,e; w) > 0 iff lifted e lies strictly below the hyperplane through lifted

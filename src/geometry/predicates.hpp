@@ -350,6 +350,147 @@ GDEL_HD int lift_sos_degenerate(const double* const* p, const double* w, const s
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------
+// Small-integer stage: exact in binary64, for filter-stage callers
+// ---------------------------------------------------------------------------------------
+// On points whose coordinates are multiples of 1/4 (integer_point at kQuarterScale: the
+// caller guarantees it), a determinant of coordinate differences evaluated in binary64 is
+// exact when every intermediate value, a multiple of its granularity, stays below 2^53:
+//  * orient3d and every SoS minor over x, y, z columns only (k <= 3 columns, differences
+//    to one row, all |d| <= D): 2x2 minors <= 2 D^2 (multiples of 2^-4), products and
+//    partial sums of the 3x3 value <= 6 D^3 (multiples of 2^-6). With D <= 2^14 every
+//    value is below 6 * 2^42 < 2^45 at a granularity of 2^-6: 51 bits, exact.
+//  * insphere over five points with integer coordinates (integer_point at scale 1),
+//    as insphere_filter evaluates it (translated to e, |d| <= D): l_i = |d_i|^2 <= 3 D^2,
+//    2x2 minors <= 2 D^2, 3x3 minors <= 6 D^3, each l_i M_i <= 18 D^5, every partial sum
+//    <= 72 D^5. With D <= 2^9 that is below 72 * 2^45 < 2^52: exact.
+//  * five points on one sphere about the origin (integers with |x| <= 2^25, so that
+//    h = |p|^2 < 2^53 is exact) have a lifted determinant of exactly 0: its h column is
+//    h times the ones column.
+//  * a lift walk's minors with the h column (integer points, |x| <= 2^23: h = |p|^2 and
+//    its differences exact, at most Hd): the column h is last, the other columns are x, y, z
+//    differences (at most D), so the 3x3 value's products and partial sums are at most
+//    6 Hd D^2 and the 2x2 value at most 2 Hd D. A computed Hd D^2 (or Hd D) of at most 2^49
+//    is at most 2^49 (1 + 2^-51) exactly: every value below 2^53, exact.
+// A certified 0 goes on through the exact forms' own SoS walks (sos_table_walk, lift_walk)
+// with SmallMinor evaluating the minors the same way; a minor past these bounds answers
+// kUncertain, and so does the whole evaluation. The signs are the exact forms' (the same
+// determinants, evaluated exactly): an evaluation order like the integer stage, for
+// filter-stage code that would decide the exact ties of lattice input (grids, voxels,
+// integer points on a sphere) without an exact pass. Only integers and multiples of 1/4
+// are involved, so no rounding happens and contraction could not change a value either.
+// No algorithm calls it yet: inlined into flip::Geo's fast forms it made every fast
+// kernel heavier (gFlip3D's proposals 89 -> 126-148 registers) and uniform input up to
+// 12 % slower, the star splaying engine's kernels slower still, while the grid's
+// proposals gained nothing (their time is the walks' instructions, serialized in a warp,
+// wherever they run): bench/RESULTS.md, session 47. What remains to try is a kernel
+// instance of its own for integer input.
+inline constexpr double kSmallOrientSpan = 0x1p14;
+inline constexpr double kSmallInsphereSpan = 0x1p9;
+inline constexpr double kSmallSphereCoord = 0x1p25;
+inline constexpr double kSmallHeightProduct = 0x1p49;
+
+namespace detail {
+// The minors of an SoS walk (predicates above: WalkMinor's interface) in binary64, exact
+// under the bound above; kUncertain for the h column or past the bound.
+struct SmallMinor {
+  const LiftedRows& R;
+  bool lifted;  // a lift walk over integer points: minors with the h column too
+  GDEL_HD int operator()(unsigned rows, unsigned cols) const {
+    const bool with_h = (cols & kColH) != 0;
+    if (with_h && !lifted) return kUncertain;
+    const int k = int(cols & 1u) + int(cols >> 1 & 1u) + int(cols >> 2 & 1u) + int(with_h);
+    const double* p[4] = {nullptr, nullptr, nullptr, nullptr};
+    gather_masked<5>(rows, 0, [&](int r) { return R.p[r]; }, p);
+    int c[3] = {0, 0, 0};
+    gather_masked<4>(cols, 0, [&](int j) { return j; }, c);
+    const double* last = k == 1 ? p[1] : k == 2 ? p[2] : p[3];
+    auto h = [](const double* q) { return fp::add(fp::add(fp::mul(q[0], q[0]), fp::mul(q[1], q[1])), fp::mul(q[2], q[2])); };
+    const double hl = with_h ? h(last) : 0.0;
+    double d[3][3] = {};
+    double span = 0, hspan = 0;  // the largest coordinate and height differences
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (i < k && j < k) {
+          const bool hc = c[j] == 3;  // (h is the last column when present)
+          d[i][j] = hc ? fp::sub(h(p[i]), hl) : fp::sub(p[i][c[j]], last[c[j]]);
+          if (hc) hspan = fp::abs(d[i][j]) > hspan ? fp::abs(d[i][j]) : hspan;
+          else span = fp::abs(d[i][j]) > span ? fp::abs(d[i][j]) : span;
+        }
+    if (!with_h && !(span <= kSmallOrientSpan)) return kUncertain;
+    if (with_h && !(fp::mul(k == 3 ? fp::mul(span, span) : k == 2 ? span : 1.0, hspan) <= kSmallHeightProduct))
+      return kUncertain;
+    double det;
+    if (k == 1) {
+      det = d[0][0];
+    } else if (k == 2) {
+      det = fp::sub(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
+    } else {  // Laplace along column 2, as det_ones_filter
+      const double m12 = fp::sub(fp::mul(d[1][0], d[2][1]), fp::mul(d[2][0], d[1][1]));
+      const double m02 = fp::sub(fp::mul(d[0][0], d[2][1]), fp::mul(d[2][0], d[0][1]));
+      const double m01 = fp::sub(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
+      det = fp::add(fp::sub(fp::mul(d[0][2], m12), fp::mul(d[1][2], m02)), fp::mul(d[2][2], m01));
+    }
+    return (det > 0) - (det < 0);
+  }
+};
+}  // namespace detail
+
+namespace detail {
+// The SoS walk of a certified tie in the small-integer stage (N = 4: orient3d_sos's table;
+// N = 5: the lift walk over integer points).
+template <int N>
+GDEL_HD int small_tie(const double* const* p, const std::int64_t* ids) {
+  LiftedRows R;
+  const int swaps = sorted_rows<N>(p, nullptr, ids, false, R);
+  SmallMinor minor{R, N == 5};
+  int v;  // as the exact forms (lift_sos_degenerate, orient3d_sos)
+  if constexpr (N == 5) v = lift_walk(minor);
+  else v = sos_table_walk(false, minor);
+  return (swaps & 1) ? v : negate_sign(v);
+}
+}  // namespace detail
+
+// orient3d_sos's sign, or kUncertain where the small-integer stage does not decide it.
+// Every coordinate must be a multiple of 1/4 (see above).
+GDEL_HD inline int orient3d_sos_small(const double* a, const double* b, const double* c, const double* d,
+                                      std::int64_t ia, std::int64_t ib, std::int64_t ic, std::int64_t id) {
+  FilterValue fv;
+  const int s = orient3d_filter(a, b, c, d, &fv);
+  if (s != kUncertain) return s;
+  if (!(fv.span <= kSmallOrientSpan)) return kUncertain;
+  if (fv.det != 0) return fv.det > 0 ? 1 : -1;
+  const double* p[4] = {a, b, c, d};
+  const std::int64_t ids[4] = {ia, ib, ic, id};
+  return detail::small_tie<4>(p, ids);
+}
+
+// insphere_lift_sos's sign, or kUncertain where the small-integer stage does not decide
+// it. Every coordinate must be an integer (see above).
+GDEL_HD inline int insphere_lift_sos_small(const double* a, const double* b, const double* c, const double* d,
+                                           const double* e, std::int64_t ia, std::int64_t ib, std::int64_t ic,
+                                           std::int64_t id, std::int64_t ie) {
+  FilterValue fv;
+  const int s = insphere_filter(a, b, c, d, e, &fv);
+  if (s != kUncertain) return s;
+  const double* p[5] = {a, b, c, d, e};
+  if (fv.span <= kSmallInsphereSpan) {
+    if (fv.det != 0) return fv.det > 0 ? 1 : -1;
+  } else {  // zero only as five points of one sphere about the origin
+    double h[5];
+    for (int i = 0; i < 5; ++i) {
+      const double* q = p[i];
+      if (!(fp::abs(q[0]) <= kSmallSphereCoord && fp::abs(q[1]) <= kSmallSphereCoord &&
+            fp::abs(q[2]) <= kSmallSphereCoord))
+        return kUncertain;
+      h[i] = fp::add(fp::add(fp::mul(q[0], q[0]), fp::mul(q[1], q[1])), fp::mul(q[2], q[2]));
+    }
+    if (!(h[0] == h[1] && h[0] == h[2] && h[0] == h[3] && h[0] == h[4])) return kUncertain;
+  }
+  const std::int64_t ids[5] = {ia, ib, ic, id, ie};
+  return detail::small_tie<5>(p, ids);
+}
+
+// ---------------------------------------------------------------------------------------
 // Points of the integer stage
 // ---------------------------------------------------------------------------------------
 

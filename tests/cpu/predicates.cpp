@@ -3,6 +3,7 @@
 // (both perturbations) against brute-force GMP evaluations, and contraction regressions.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -716,6 +717,96 @@ TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
   EXPECT_GT(zeros, 10000);
   EXPECT_GT(refused, 10000);
   fail.report("integer stage");
+}
+
+// =========================================================================================
+// The small-integer stage (predicates.hpp: exact in binary64, for the fast forms): where it
+// answers, the exact SoS sign (GMP and the brute-force perturbations); it answers the
+// lattice's ties, and refuses past its bounds
+// =========================================================================================
+namespace {
+// The integer points of the sphere x^2 + y^2 + z^2 = d (radius about 1 000: neighbours
+// farther apart than the insphere bound of 2^9 are common).
+std::vector<std::array<double, 3>> sphere_lattice(long d) {
+  std::vector<std::array<double, 3>> pts;
+  const long r = static_cast<long>(std::sqrt(static_cast<double>(d)));
+  for (long x = -r; x <= r; ++x)
+    for (long y = -r; y <= r; ++y) {
+      const long z2 = d - x * x - y * y;
+      if (z2 < 0) continue;
+      const long z = std::lround(std::sqrt(static_cast<double>(z2)));
+      if (z * z != z2) continue;
+      pts.push_back({double(x), double(y), double(z)});
+      if (z != 0) pts.push_back({double(x), double(y), double(-z)});
+    }
+  return pts;
+}
+}  // namespace
+
+TEST(Predicates, SmallIntegerStageMatchesGmpAndSos) {
+  Generator g(777);
+  Oracle o;
+  Failures fail;
+  std::vector<double> work(kPredicateWork);
+  const auto sphere = sphere_lattice(1000001);
+  ASSERT_GT(sphere.size(), 1000u);
+  long o3_decided = 0, o3_ties = 0, o3_refused = 0, in_decided = 0, in_ties = 0, in_sphere = 0, in_refused = 0;
+  for (long t = 0; t < 200000; ++t) {
+    Case k;
+    g.ids(k);
+    const int fam = static_cast<int>(t % 5);
+    // 0: a small box (ties everywhere); 1: the box of the grid generator, 512^3; 2: past
+    // the bounds (differences up to 2^15, on one plane); 3: multiples of 1/4 (orient3d
+    // only: ∞'s point K);
+    // 4: integer points of one sphere, a random neighbourhood
+    const int side = fam == 0 ? g.integer(1, 4) : fam == 1 ? 511 : fam == 2 ? (1 << 15) : 64;
+    const std::size_t s0 = g.integer(0, static_cast<int>(sphere.size()) - 1);
+    for (int i = 0; i < 5; ++i) {
+      const std::size_t j = (s0 + static_cast<std::size_t>(g.integer(0, 400))) % sphere.size();
+      for (int c = 0; c < 3; ++c) {
+        k.p[i][c] = fam == 4 ? sphere[j][c] : fam == 2 && c == 2 ? 100000 : g.integer(0, side);
+        if (fam == 3) k.p[i][c] *= 0.25;
+      }
+    }
+    for (int i = 0; i < 5; ++i) k.w[i] = 0;
+    // orient3d: the small stage against GMP (an exact 0: the brute-force E-M perturbation)
+    o.load(k, 4, false);
+    const int x3 = o.orient3d();
+    const int s3 = orient3d_sos_small(k.p[0], k.p[1], k.p[2], k.p[3], k.id[0], k.id[1], k.id[2], k.id[3]);
+    if (s3 == kUncertain) {
+      ++o3_refused;
+    } else {
+      ++o3_decided;
+      o3_ties += x3 == 0;
+      const int want = x3 != 0 ? x3 : o.em_sos(4, k.id);
+      if (s3 != want || s3 != call(Pred::O3Sos, k, work.data())) fail.add("orient3d_sos_small " + describe(k, 4));
+    }
+    if (fam == 3) continue;  // (insphere_lift_sos_small takes integers only)
+    o.load(k, 5, false);
+    const int xi = o.lifted();
+    const int si = insphere_lift_sos_small(k.p[0], k.p[1], k.p[2], k.p[3], k.p[4], k.id[0], k.id[1], k.id[2],
+                                           k.id[3], k.id[4]);
+    if (si == kUncertain) {
+      ++in_refused;
+    } else {
+      ++in_decided;
+      in_ties += xi == 0;
+      in_sphere += xi == 0 && fam == 4;
+      const int want = xi != 0 ? xi : o.lift_sos(k.id);
+      if (si != want || si != call(Pred::InsLift, k, work.data()))
+        fail.add("insphere_lift_sos_small " + describe(k, 5));
+    }
+  }
+  std::printf("[small-integer stage] orient3d %ld decided (%ld ties), %ld refused; insphere %ld decided (%ld ties, "
+              "%ld on the sphere), %ld refused\n",
+              o3_decided, o3_ties, o3_refused, in_decided, in_ties, in_sphere, in_refused);
+  // every outcome occurs, so the checks above see something
+  EXPECT_GT(o3_ties, 5000);
+  EXPECT_GT(in_ties, 5000);
+  EXPECT_GT(in_sphere, 1000);
+  EXPECT_GT(o3_refused, 1000);
+  EXPECT_GT(in_refused, 1000);
+  fail.report("small-integer stage");
 }
 
 // The narrow form (int64 minors, one 128-bit step) and the 128-bit form of the integer

@@ -35,6 +35,7 @@ struct Result {
   int pw, pwx, pws, pwl;
   int minor[kMasks];
   int minor_exact[kMasks];
+  int o3small, inlsmall;  // the small-integer stage where its callers may use it, else kUncertain
 };
 
 template <class Work>  // double* (a scratch) or std::nullptr_t (none: the scratch-free instances)
@@ -55,6 +56,13 @@ GDEL_HD void evaluate(const Case& k, Result& r, Work work) {
   r.pwl = power_lift_sos(a, b, c, d, e, w[0], w[1], w[2], w[3], w[4], id[0], id[1], id[2], id[3],
                          id[4], work);
   const double* pts[5] = {a, b, c, d, e};
+  bool quarters = true, integers = true;
+  for (int i = 0; i < 5; ++i) {
+    quarters = quarters && (i == 4 || integer_point(pts[i], 0.0, kQuarterScale));
+    integers = integers && integer_point(pts[i]);
+  }
+  r.o3small = quarters ? orient3d_sos_small(a, b, c, d, id[0], id[1], id[2], id[3]) : kUncertain;
+  r.inlsmall = integers ? insphere_lift_sos_small(a, b, c, d, e, id[0], id[1], id[2], id[3], id[4]) : kUncertain;
   double* mw = work;  // (the minors' API takes a double*: null without a scratch)
   for (int m = 0; m < kMasks; ++m) {
     r.minor[m] = lifted_minor(pts, w, static_cast<unsigned>(m + 1), mw);
@@ -159,9 +167,9 @@ TEST(GpuPredicates, MatchGmpAndHost) {
   CUDA_OK(cudaDeviceSynchronize());
   CUDA_OK(cudaMemcpy(free_out.data(), d_out.ptr, sizeof(Result) * n, cudaMemcpyDeviceToHost));
 
-  long bad = 0, zero_sos = 0, brute = 0, free_decided = 0;
+  long bad = 0, zero_sos = 0, brute = 0, free_decided = 0, small_ties = 0;
   // The GMP checks run on all host threads (one oracle and scratch per thread).
-#pragma omp parallel reduction(+ : bad, zero_sos, brute, free_decided)
+#pragma omp parallel reduction(+ : bad, zero_sos, brute, free_decided, small_ties)
   {
     Oracle o;
     std::vector<double> work(kPredicateWork);
@@ -214,15 +222,20 @@ TEST(GpuPredicates, MatchGmpAndHost) {
         if (r.minor[m] != xm || r.minor_exact[m] != xm) fail(i, "minor");
       }
       if (x3 == 0 && i % 8 == 0 && r.o3s != o.em_sos(4, k.id)) fail(i, "orient3d_sos brute force");
+      if ((r.o3small != kUncertain && r.o3small != r.o3s) || (r.inlsmall != kUncertain && r.inlsmall != r.inl))
+        fail(i, "small-integer stage");
+      small_ties += (r.o3small != kUncertain && x3 == 0) + (r.inlsmall != kUncertain && xi == 0);
       zero_sos += r.o3s == 0 || r.ins == 0 || r.inl == 0 || r.pws == 0 || r.pwl == 0;
       if ((x3 && r.o3s != x3) || (xi && (r.ins != xi || r.inl != xi)) || (xp && (r.pws != xp || r.pwl != xp)))
         fail(i, "sos disagrees with a non-zero exact sign");
     }
   }
   std::printf("[gpu] %d cases (%d random, %d degenerate, %d at the integer stage's narrow limit) in %.2f s on "
-              "the device; %ld brute-force SoS checks; %ld integer cases decided without a scratch\n", n, n_random,
-              n_degenerate, n_narrow, sec, brute, free_decided);
+              "the device; %ld brute-force SoS checks; %ld integer cases decided without a scratch; %ld ties "
+              "decided by the small-integer stage\n", n, n_random, n_degenerate, n_narrow, sec, brute, free_decided,
+              small_ties);
   EXPECT_GT(free_decided, n_degenerate / 10);
+  EXPECT_GT(small_ties, n_degenerate / 20);  // (11 477 of 131 072 on the H200, session 47)
   EXPECT_EQ(bad, 0);
   EXPECT_EQ(zero_sos, 0);
 }
