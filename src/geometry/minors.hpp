@@ -425,6 +425,24 @@ GDEL_HD GDEL_FORCEINLINE void lift_fp(const double* p, double w, double& h, doub
   ha = fp::add(s, fp::abs(w));
 }
 
+// The K x K determinant (K = 1..3) of d in binary64, by the filters' evaluation order
+// (Laplace along the last column for K = 3); with each sub replaced by an add and d by its
+// absolute values (Abs), the matching permanent.
+template <int K, bool Abs = false>
+GDEL_HD GDEL_FORCEINLINE double det_small(const double (&d)[3][3]) {
+  auto pm = [](double a, double b) { return Abs ? fp::add(a, b) : fp::sub(a, b); };
+  if constexpr (K == 1) {
+    return d[0][0];
+  } else if constexpr (K == 2) {
+    return pm(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
+  } else {  // + d02*m(1,2) - d12*m(0,2) + d22*m(0,1)
+    const double m12 = pm(fp::mul(d[1][0], d[2][1]), fp::mul(d[2][0], d[1][1]));
+    const double m02 = pm(fp::mul(d[0][0], d[2][1]), fp::mul(d[2][0], d[0][1]));
+    const double m01 = pm(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
+    return fp::add(pm(fp::mul(d[0][2], m12), fp::mul(d[1][2], m02)), fp::mul(d[2][2], m01));
+  }
+}
+
 // Generic filter for det[[q_rows[i], 1]], K = 1..3 columns; -1/+1 or kUncertain.
 // Rounding counts N (see filter_bounds.hpp): the entries D_ij = q_ij - q_Kj carry 1
 // rounding for a coordinate column, 5 for the h column (4 inside h, 1 for the difference);
@@ -455,28 +473,10 @@ GDEL_HD int det_ones_filter(const LiftedRows& R, const int* rows, const int* col
       }
     }
   }
-  double det, perm;
-  int n;
-  if constexpr (K == 1) {
-    det = d[0][0];
-    perm = a[0][0];
-    n = n_round[0];
-  } else if constexpr (K == 2) {
-    det = fp::sub(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
-    perm = fp::add(fp::mul(a[0][0], a[1][1]), fp::mul(a[1][0], a[0][1]));
-    n = n_round[0] + n_round[1] + 2;
-  } else {
-    // Laplace along column 2: + d02*m(1,2) - d12*m(0,2) + d22*m(0,1).
-    const double m12 = fp::sub(fp::mul(d[1][0], d[2][1]), fp::mul(d[2][0], d[1][1]));
-    const double m02 = fp::sub(fp::mul(d[0][0], d[2][1]), fp::mul(d[2][0], d[0][1]));
-    const double m01 = fp::sub(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
-    const double p12 = fp::add(fp::mul(a[1][0], a[2][1]), fp::mul(a[2][0], a[1][1]));
-    const double p02 = fp::add(fp::mul(a[0][0], a[2][1]), fp::mul(a[2][0], a[0][1]));
-    const double p01 = fp::add(fp::mul(a[0][0], a[1][1]), fp::mul(a[1][0], a[0][1]));
-    det = fp::add(fp::sub(fp::mul(d[0][2], m12), fp::mul(d[1][2], m02)), fp::mul(d[2][2], m01));
-    perm = fp::add(fp::add(fp::mul(a[0][2], p12), fp::mul(a[1][2], p02)), fp::mul(a[2][2], p01));
-    n = n_round[0] + n_round[1] + 2 + n_round[2] + 3;
-  }
+  const double det = det_small<K>(d), perm = det_small<K, true>(a);
+  int n = n_round[0];
+  if constexpr (K >= 2) n += n_round[1] + 2;
+  if constexpr (K == 3) n += n_round[2] + 3;
   if (!(perm >= bounds::kMinorThreshold && perm <= bounds::kMaxFinite)) return kUncertain;
   const double err = fp::mul(bounds::coefficient(n), perm);
   if (det > err) return 1;

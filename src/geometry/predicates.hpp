@@ -404,7 +404,11 @@ struct SmallMinor {
     int c[3] = {0, 0, 0};
     gather_masked<4>(cols, 0, [&](int j) { return j; }, c);
     const double* last = k == 1 ? p[1] : k == 2 ? p[2] : p[3];
-    auto h = [](const double* q) { return fp::add(fp::add(fp::mul(q[0], q[0]), fp::mul(q[1], q[1])), fp::mul(q[2], q[2])); };
+    auto h = [](const double* q) {  // |q|^2 (exact here)
+      double v, va;
+      lift_fp(q, 0.0, v, va);
+      return v;
+    };
     const double hl = with_h ? h(last) : 0.0;
     double d[3][3] = {};
     double span = 0, hspan = 0;  // the largest coordinate and height differences
@@ -419,23 +423,11 @@ struct SmallMinor {
     if (!with_h && !(span <= kSmallOrientSpan)) return kUncertain;
     if (with_h && !(fp::mul(k == 3 ? fp::mul(span, span) : k == 2 ? span : 1.0, hspan) <= kSmallHeightProduct))
       return kUncertain;
-    double det;
-    if (k == 1) {
-      det = d[0][0];
-    } else if (k == 2) {
-      det = fp::sub(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
-    } else {  // Laplace along column 2, as det_ones_filter
-      const double m12 = fp::sub(fp::mul(d[1][0], d[2][1]), fp::mul(d[2][0], d[1][1]));
-      const double m02 = fp::sub(fp::mul(d[0][0], d[2][1]), fp::mul(d[2][0], d[0][1]));
-      const double m01 = fp::sub(fp::mul(d[0][0], d[1][1]), fp::mul(d[1][0], d[0][1]));
-      det = fp::add(fp::sub(fp::mul(d[0][2], m12), fp::mul(d[1][2], m02)), fp::mul(d[2][2], m01));
-    }
+    const double det = k == 1 ? det_small<1>(d) : k == 2 ? det_small<2>(d) : det_small<3>(d);
     return (det > 0) - (det < 0);
   }
 };
-}  // namespace detail
 
-namespace detail {
 // The SoS walk of a certified tie in the small-integer stage (N = 4: orient3d_sos's table;
 // N = 5: the lift walk over integer points).
 template <int N>
@@ -476,13 +468,13 @@ GDEL_HD inline int insphere_lift_sos_small(const double* a, const double* b, con
   if (fv.span <= kSmallInsphereSpan) {
     if (fv.det != 0) return fv.det > 0 ? 1 : -1;
   } else {  // zero only as five points of one sphere about the origin
-    double h[5];
+    double h[5], ha;
     for (int i = 0; i < 5; ++i) {
       const double* q = p[i];
       if (!(fp::abs(q[0]) <= kSmallSphereCoord && fp::abs(q[1]) <= kSmallSphereCoord &&
             fp::abs(q[2]) <= kSmallSphereCoord))
         return kUncertain;
-      h[i] = fp::add(fp::add(fp::mul(q[0], q[0]), fp::mul(q[1], q[1])), fp::mul(q[2], q[2]));
+      detail::lift_fp(q, 0.0, h[i], ha);
     }
     if (!(h[0] == h[1] && h[0] == h[2] && h[0] == h[3] && h[0] == h[4])) return kUncertain;
   }

@@ -720,7 +720,7 @@ TEST(Predicates, IntegerStageAppliesWithinItsBoundsAndMatchesGmp) {
 }
 
 // =========================================================================================
-// The small-integer stage (predicates.hpp: exact in binary64, for the fast forms): where it
+// The small-integer stage (predicates.hpp: exact in binary64, for filter-stage code): where it
 // answers, the exact SoS sign (GMP and the brute-force perturbations); it answers the
 // lattice's ties, and refuses past its bounds
 // =========================================================================================
