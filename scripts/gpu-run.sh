@@ -1371,6 +1371,51 @@ for m, v in sorted(acc.items(), key=lambda x: -x[1] / max(cnt[x[0]], 1))[:14]:
 PY
     done
     ;;
+  s48a)  # session 48: the scratch-free passes spread their items over the resident warps (par's scratch_kernel):
+          # the GPU tests in the binaries' folder, then oldnew with gdel-bench-old a wrapper that runs the same
+          # binary with GDEL_SPREAD_ITEMS=0 (the plain mapping, one item per thread)
+    for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile; do
+      [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"
+    done
+    printf '#!/bin/sh\nGDEL_SPREAD_ITEMS=0 exec "$(dirname "$0")/gdel-bench" "$@"\n' >"$bin/gdel-bench-old"
+    chmod +x "$bin/gdel-bench-old"
+    alternate s48a --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ROUNDS=1 alternate s48a_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 ROUNDS=1 alternate s48a_prof --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s48b)  # session 48: how divergent the flip loop's exact passes are (ncu: threads per warp instruction, time)
+          # on grid and sphere 10^6, spread (the default)
+    for d in grid sphere; do
+      NCU_METRICS=smsp__inst_executed.sum,smsp__thread_inst_executed.sum ncu_kernels "s48b_$d" \
+        'exact_after_fast|propose_spread' gdel-bench --dist $d --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    done
+    ;;
+  s48c)  # session 48: the exact proposals in lockstep (flip::for_non_ld_faces): gpu_gflip3d and gpu_gdel3d, oldnew
+          # against s48a's gdel-bench (gdel-bench-old), then s48b's ncu on the grid with the new binary
+    for t in gpu_gflip3d gpu_gdel3d; do
+      [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"
+    done
+    oldnew s48c
+    NCU_METRICS=smsp__inst_executed.sum,smsp__thread_inst_executed.sum ncu_kernels s48c_grid \
+      'exact_after_fast|propose_spread' gdel-bench --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    ;;
+  s48d)  # session 48: the committed code (s48a's binary: spreading on) on every generator at 10^6, medians of 5,
+          # three rounds, and uniform 10^7
+    for r in 1 2 3; do
+      bench "s48d_m6_$r" 90 --dist uniform,gaussian,ball,thin_shell,grid,sphere --n 1000000 \
+        --methods gdel3d-cuda-dev --repeat 5
+    done
+    bench s48d_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
+  s48e)  # session 48: the small-iteration threshold again with spreading on (GDEL_TEAM_MAX: 1 024 default), grid,
+          # sphere and uniform 10^6, medians of 5, two rounds
+    for r in 1 2; do
+      for tm in 1024 2048 4096 8192; do
+        GDEL_TEAM_MAX=$tm bench "s48e_t${tm}_$r" 60 --dist uniform,grid,sphere --n 1000000 \
+          --methods gdel3d-cuda-dev --repeat 5
+      done
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

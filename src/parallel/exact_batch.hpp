@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "parallel/primitives.hpp"
@@ -67,15 +68,30 @@ void scratch_pass(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, 
 #if defined(__CUDACC__)
 namespace detail {
 // Free: work is the constant nullptr (the scratch-free form), else the thread's slice.
+// The scratch-free form spreads its items over the first `spread` warps (those the
+// device holds at once: scratch_pass; 0: no spreading): with n items, lanes 0..L-1 of
+// each of them work, L = ceil(n / spread), on item warp * L + lane. A warp whose threads
+// take different paths (the SoS walks of exact ties) runs them one after the other, so
+// a few items per warp over every resident warp finish sooner than full warps on a few
+// SMs. From L = 32 on it is the plain mapping (item = thread, striding over the launch).
 template <bool Free, class F>
 __global__ void scratch_kernel(std::int64_t n, const std::int64_t* count, double* scratch, std::size_t work_doubles,
-                               F f) {
+                               std::int64_t spread, F f) {
   if (count && *count < n) n = *count;
   const std::int64_t tid = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x;
-  const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
-  for (std::int64_t k = tid; k < n; k += stride) {
-    if constexpr (Free) f(k, nullptr);
-    else f(k, scratch + tid * work_doubles);
+  if constexpr (Free) {
+    const std::int64_t lanes = spread > 0 && n < 32 * spread ? (n + spread - 1) / spread : 32;
+    const std::int64_t lane = tid & 31;
+    if (lanes < 32) {  // n <= spread * lanes: one item at most per thread
+      const std::int64_t k = (tid >> 5) * lanes + lane;
+      if (lane < lanes && k < n) f(k, nullptr);
+      return;
+    }
+    const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
+    for (std::int64_t k = tid; k < n; k += stride) f(k, nullptr);
+  } else {
+    const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
+    for (std::int64_t k = tid; k < n; k += stride) f(k, scratch + tid * work_doubles);
   }
 }
 inline std::int64_t env_per_sm(const char* name, std::int64_t dflt) {
@@ -99,16 +115,47 @@ inline std::int64_t exact_threads(const Context<Cuda>& c, std::int64_t n, bool s
 }
 
 namespace detail {
+// Whether scratch-free passes spread their items (scratch_kernel); GDEL_SPREAD_ITEMS=0
+// for measurements: no.
+inline bool spread_items() {
+  static const bool v = [] {
+    const char* e = std::getenv("GDEL_SPREAD_ITEMS");
+    return !(e && std::string(e) == "0");
+  }();
+  return v;
+}
+// The warps of `kernel` the device holds at once in blocks of `block` threads (its
+// occupancy; asked once per kernel: each call site launches its kernel, a lambda of its
+// own, with one block size).
+template <class K>
+std::int64_t resident_warps(const Context<Cuda>& c, K kernel, int block) {
+  static const std::int64_t resident = [&] {
+    int per_sm = 0;
+    if (cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_sm, kernel, block, 0) != cudaSuccess || per_sm < 1) {
+      (void)cudaGetLastError();
+      per_sm = 1;
+    }
+    return std::int64_t(c.sm_count()) * per_sm * (block / 32);
+  }();
+  return resident;
+}
 template <bool Free, class F>
 void scratch_pass(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f, const std::int64_t* count,
                   std::int64_t max_threads, int block) {
   if (n <= 0) return;
   std::int64_t want = exact_threads(c, n, Free);
   if (max_threads > 0 && max_threads < want) want = max_threads;
+  // spreading: up to one warp per item, over the resident warps (scratch_kernel)
+  std::int64_t spread = 0;
+  if (Free && spread_items()) {
+    spread = resident_warps(c, scratch_kernel<Free, F>, block);
+    if (n < spread) spread = n;
+    if (32 * spread > want) want = 32 * spread;
+  }
   std::int64_t threads = (want + block - 1) / block * block;
   Buffer<double, Cuda> scratch(c, Free ? 0 : static_cast<std::size_t>(threads) * work_doubles);
-  scratch_kernel<Free><<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(n, count, scratch.data(),
-                                                                                       work_doubles, f);
+  scratch_kernel<Free><<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(
+      n, count, scratch.data(), work_doubles, spread, f);
   GDEL_CUDA_CHECK_LAUNCH("for_each_with_scratch");
 }
 }  // namespace detail
