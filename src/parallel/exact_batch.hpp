@@ -81,17 +81,16 @@ __global__ void scratch_kernel(std::int64_t n, const std::int64_t* count, double
   const std::int64_t tid = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x;
   if constexpr (Free) {
     const std::int64_t lanes = spread > 0 && n < 32 * spread ? (n + spread - 1) / spread : 32;
-    const std::int64_t lane = tid & 31;
     if (lanes < 32) {  // n <= spread * lanes: one item at most per thread
-      const std::int64_t k = (tid >> 5) * lanes + lane;
+      const std::int64_t lane = tid & 31, k = (tid >> 5) * lanes + lane;
       if (lane < lanes && k < n) f(k, nullptr);
       return;
     }
-    const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
-    for (std::int64_t k = tid; k < n; k += stride) f(k, nullptr);
-  } else {
-    const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
-    for (std::int64_t k = tid; k < n; k += stride) f(k, scratch + tid * work_doubles);
+  }
+  const std::int64_t stride = std::int64_t(gridDim.x) * blockDim.x;
+  for (std::int64_t k = tid; k < n; k += stride) {
+    if constexpr (Free) f(k, nullptr);
+    else f(k, scratch + tid * work_doubles);
   }
 }
 inline std::int64_t env_per_sm(const char* name, std::int64_t dflt) {
