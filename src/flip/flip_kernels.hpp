@@ -190,6 +190,41 @@ GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, Work work) {
   return r == -1 && stuck ? kStuckResult : r;
 }
 
+// propose_flip's exact form split by face (par::split_scratch_free, on integer input:
+// work is nullptr there, Geo::int_all; the exact forms filter first): face i's part, -1
+// when it has no neighbour, is internal or is locally Delaunay, else face_flip's flip or
+// kStuckResult (-1 there), or kUndecidedResult. join_face_proposals makes propose_flip's
+// answer from the four. The other faces' apexes are loaded only for a face that is not
+// locally Delaunay.
+template <class Work>
+GDEL_HD std::int8_t face_proposal(const Geo& g, const MeshView& m, tid_t b, int i, Work work) {
+  if (!m.alive(b)) return -1;
+  const Tet bt = m.tet[b];
+  std::uint8_t fl[4];
+  m.get_face_flags(b, fl);
+  const vid_t x = apex_across(m, b, bt.v, i);
+  if (x == kNoVertex || (pick4(fl, i) & mesh::kInternal)) return -1;
+  const int s = g.insphere<true>(bt.v, x, work);
+  if (s == par::kUndecided) return kUndecidedResult;
+  if (s <= 0) return -1;  // locally Delaunay
+  tid_t nt[4];
+  m.get_opp_tets(b, nt);
+  vid_t apex[4];
+  for (int k = 0; k < 4; ++k) apex[k] = k == i ? x : apex_in(m, nt[k], bt.v, k);
+  const int f = face_flip<true>(g, bt.v, apex, i, work);
+  return static_cast<std::int8_t>(f == -1 ? kStuckResult : f);
+}
+// The first face's flip in face order (kUndecidedResult if an undecided face comes
+// first), else kStuckResult when some face is stuck, else -1: propose_flip's answer.
+GDEL_HD inline int join_face_proposals(const std::int8_t* r) {
+  bool stuck = false;
+  for (int i = 0; i < 4; ++i) {
+    if (r[i] >= 0 || r[i] == kUndecidedResult) return r[i];
+    stuck = stuck || r[i] == kStuckResult;
+  }
+  return stuck ? kStuckResult : -1;
+}
+
 // ---------------------------------------------------------------------------
 // Non-optimal flips (Options::nonoptimal_flips, docs/gflip3d.md): edge removal by ear
 // cutting. A stuck facet F = (p, q, c) of tet B = (p, q, c, v), apex x across it, not

@@ -919,17 +919,34 @@ class GFlip3D {
       pp[k] = p;
       return p != kUndecidedResult;
     };
-    auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
-      const int p = propose_flip<true>(g, m, A[k], work);
-      if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
-      pp[k] = p;
-      return true;
-    };
-    st_.exact_evaluations += fast_then_exact(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
+    if (g.int_all && split_exact_) {  // the undecided tets' exact proposals a face per thread
+      auto part = [=] GDEL_LAMBDA(std::int64_t k, int i, auto work) {
+        return face_proposal(g, m, A[k], i, work);
+      };
+      auto join = [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { pp[k] = join_face_proposals(r); };
+      st_.exact_evaluations += par::fast_then_split(ctx_, na, und.data(), fast, 4, part, join, exact_tally());
+    } else {
+      auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
+        const int p = propose_flip<true>(g, m, A[k], work);
+        if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
+        pp[k] = p;
+        return true;
+      };
+      st_.exact_evaluations += fast_then_exact(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
+    }
     par::mark(ctx_, "flip: propose");
     und.release();
     active_deferred_ = false;
     return commit_flips(A, na, prop, with_log, defer_active()) > 0;
+  }
+
+  // On integer input (Geo::int_all) the large iterations' exact proposals run a face per
+  // thread (par::fast_then_split: face_proposal, join_face_proposals), not a tet per
+  // thread (bench/RESULTS.md, session 49); GDEL_SPLIT_EXACT=0 for measurements: a tet per
+  // thread. (propose_spread's small iterations split too measured no better: session 49.)
+  static bool split_exact_setting() {
+    const char* e = std::getenv("GDEL_SPLIT_EXACT");
+    return !(e && std::string(e) == "0");
   }
 
   // Active sets up to this many tets are proposed and decided in one team
@@ -1663,6 +1680,7 @@ class GFlip3D {
   std::int64_t team_max_ = team_max_setting();
   ProposeAt propose_at_ = propose_at_setting();
   int spread_block_ = spread_block_setting();
+  bool split_exact_ = split_exact_setting();
   Buffer<std::uint64_t, B> aux_key_;  // per tet slot; see grow_aux for the three
   Buffer<std::int32_t, B> aux_pick_;
   bool marks_dirty_ = false;  // aux_key_ holds flip stamps

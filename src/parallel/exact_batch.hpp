@@ -11,7 +11,9 @@
 // work = nullptr (no scratch: see exact_threads for how many threads); exact answers false where it needs the scratch
 // (flip::Geo on integer input: its evaluations over finite points run in the integer
 // stage and never touch it), and only those items go on to pass 2's scratch threads.
-// two_stage_signs is the same for a sign per item.
+// two_stage_signs is the same for a sign per item. fast_then_split: items whose exact
+// evaluation splits into independent pieces decided without a scratch run a piece per
+// thread, then a join per item.
 // On the GPU pass 2 runs with a bounded number of threads, each owning a slice of a
 // global-memory scratch (exact expansions are far too long for registers), grid-
 // striding over the list; on the CPU each OpenMP thread uses a heap scratch.
@@ -50,8 +52,8 @@ inline constexpr std::int64_t kUncountedListMax = std::int64_t(1) << 22;
 namespace detail {
 template <bool Free, class F>
 void scratch_pass(Context<Cpu>&, std::int64_t n, std::size_t work_doubles, F f, const std::int64_t* count,
-                  std::int64_t /*max_threads*/, int /*block*/) {
-  if (count && *count < n) n = *count;
+                  std::int64_t /*max_threads*/, int /*block*/, std::int64_t count_scale = 1) {
+  if (count && *count * count_scale < n) n = *count * count_scale;
   if (n <= 0) return;
 #pragma omp parallel if (n >= 64)  // exact items are costly: a team pays off early
   {
@@ -75,9 +77,9 @@ namespace detail {
 // a few items per warp over every resident warp finish sooner than full warps on a few
 // SMs. From L = 32 on it is the plain mapping (item = thread, striding over the launch).
 template <bool Free, class F>
-__global__ void scratch_kernel(std::int64_t n, const std::int64_t* count, double* scratch, std::size_t work_doubles,
-                               std::int64_t spread, F f) {
-  if (count && *count < n) n = *count;
+__global__ void scratch_kernel(std::int64_t n, const std::int64_t* count, std::int64_t count_scale, double* scratch,
+                               std::size_t work_doubles, std::int64_t spread, F f) {
+  if (count && *count * count_scale < n) n = *count * count_scale;
   const std::int64_t tid = std::int64_t(blockIdx.x) * blockDim.x + threadIdx.x;
   if constexpr (Free) {
     const std::int64_t lanes = spread > 0 && n < 32 * spread ? (n + spread - 1) / spread : 32;
@@ -140,7 +142,7 @@ std::int64_t resident_warps(const Context<Cuda>& c, K kernel, int block) {
 }
 template <bool Free, class F>
 void scratch_pass(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F f, const std::int64_t* count,
-                  std::int64_t max_threads, int block) {
+                  std::int64_t max_threads, int block, std::int64_t count_scale = 1) {
   if (n <= 0) return;
   std::int64_t want = exact_threads(c, n, Free);
   if (max_threads > 0 && max_threads < want) want = max_threads;
@@ -154,7 +156,7 @@ void scratch_pass(Context<Cuda>& c, std::int64_t n, std::size_t work_doubles, F 
   std::int64_t threads = (want + block - 1) / block * block;
   Buffer<double, Cuda> scratch(c, Free ? 0 : static_cast<std::size_t>(threads) * work_doubles);
   scratch_kernel<Free><<<static_cast<unsigned>(threads / block), block, 0, c.stream()>>>(
-      n, count, scratch.data(), work_doubles, spread, f);
+      n, count, count_scale, scratch.data(), work_doubles, spread, f);
   GDEL_CUDA_CHECK_LAUNCH("for_each_with_scratch");
 }
 }  // namespace detail
@@ -168,6 +170,26 @@ void for_each_with_scratch(Context<B>& ctx, std::int64_t n, std::size_t work_dou
 }
 
 namespace detail {
+// The undecided items' list: list[0, cnt[0]) (cnt has 2 counters), bound >= cnt[0] known
+// to the host (0: no items). wait: the host reads the count (bound = cnt[0]).
+template <class B>
+struct UndecidedList {
+  Buffer<std::int64_t, B> cnt, list;
+  std::int64_t bound = 0;
+};
+template <class B>
+UndecidedList<B> undecided_list(Context<B>& ctx, std::int64_t n, const std::int8_t* undecided, bool wait) {
+  auto und = [=] GDEL_LAMBDA(std::int64_t i) { return undecided[i] != 0; };
+  // Over many items the undecided ones (few) are counted first (a wait), so that the
+  // list is as long as they are, not n (see kUncountedListMax).
+  UndecidedList<B> u{Buffer<std::int64_t, B>(ctx, 2), Buffer<std::int64_t, B>(ctx), 0};
+  u.bound = n > kUncountedListMax ? count_indices(ctx, static_cast<std::size_t>(n), und) : n;
+  if (u.bound == 0) return u;
+  u.list.resize(static_cast<std::size_t>(u.bound));
+  select_indices_to(ctx, static_cast<std::size_t>(n), u.list.data(), u.cnt.data(), und);
+  if (wait) u.bound = u.cnt.get(0);
+  return u;
+}
 // One path for both forms: the undecided items' list, its length on the backend (cnt[0]),
 // the passes bounded by what the host knows and cut by the backend's count. With a tally
 // nothing waits for the host before the exact passes are enqueued (below 2^22 items);
@@ -175,22 +197,13 @@ namespace detail {
 template <bool Tiers, class B, class Exact>
 std::int64_t exact_after_fast(Context<B>& ctx, std::int64_t n, const std::int8_t* undecided, Exact exact,
                               std::size_t work_doubles, bool tiered, std::int64_t* tally, std::int64_t max_threads) {
-  auto und = [=] GDEL_LAMBDA(std::int64_t i) { return undecided[i] != 0; };
-  // Over many items the undecided ones (few) are counted first (a wait), so that the
-  // list is as long as they are, not n (see kUncountedListMax).
-  std::int64_t bound = n > kUncountedListMax ? count_indices(ctx, static_cast<std::size_t>(n), und) : n;
-  if (bound == 0) return 0;
-  Buffer<std::int64_t, B> cnt(ctx, 2);
-  std::int64_t* cp = cnt.data();
-  Buffer<std::int64_t, B> list(ctx, static_cast<std::size_t>(bound));
-  std::int64_t* lp = list.data();
-  select_indices_to(ctx, static_cast<std::size_t>(n), lp, cp, und);
   // Without a tally the caller waits for the count anyway: wait here, so that the
   // scratch is sized by the items, not by n (0.95 GB at n = 10^6: session 19's s19a).
-  if (!tally) {
-    bound = cnt.get(0);
-    if (bound == 0) return 0;
-  }
+  UndecidedList<B> u = undecided_list(ctx, n, undecided, !tally);
+  std::int64_t bound = u.bound;
+  if (bound == 0) return 0;
+  std::int64_t* cp = u.cnt.data();
+  std::int64_t* lp = u.list.data();
   if constexpr (Tiers) {  // (exact's return type is not asked for: nvcc's device lambdas hide it from host code)
     if (tiered) {
       scratch_pass</*Free=*/true>(
@@ -224,6 +237,49 @@ std::int64_t fast_then_exact_impl(Context<B>& ctx, std::int64_t n, std::int8_t* 
   return exact_after_fast<Tiers>(ctx, n, undecided, exact, work_doubles, tiered, tally, max_threads);
 }
 }  // namespace detail
+
+// Items whose exact evaluation is `parts` independent pieces, each decided without a
+// scratch (flip::Geo::int_all: gFlip3D's proposals on integer input, a piece per face),
+// split into one item per piece: part(k, p, nullptr) -> std::int8_t for p < parts, then
+// join(k, r) with r[0, parts) those answers, for k < min(n, *count) (count: backend
+// memory, or nullptr for n). One thread per piece: a warp then runs the same kind of
+// test in each lane (an exact tie's SoS walk beside another's), where a thread per item
+// runs its pieces' tests one after the other, each warp mixing tests of every kind
+// (bench/RESULTS.md, session 49). The pieces run in the scratch-free pass (spread over
+// the resident warps); their answers in a buffer of parts bytes per item.
+template <class B, class Part, class Join>
+void split_scratch_free(Context<B>& ctx, std::int64_t n, const std::int64_t* count, int parts, Part part, Join join) {
+  if (n <= 0) return;
+  Buffer<std::int8_t, B> res(ctx, static_cast<std::size_t>(n * parts));
+  std::int8_t* rp = res.data();
+  detail::scratch_pass</*Free=*/true>(  // (pieces: parts * min(n, *count))
+      ctx, n * parts, 0, [=] GDEL_LAMBDA(std::int64_t j, auto work) { rp[j] = part(j / parts, int(j % parts), work); },
+      count, -1, 64, parts);
+  parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t k) {
+    if (!count || k < *count) join(k, rp + k * parts);
+  });
+}
+// fast_then_exact with the exact evaluation split as split_scratch_free's: fast(i) on all
+// n items, then part(i, p, nullptr) and join(i, r) for the undecided ones. The count of
+// undecided items is returned (a wait), or with `tally` (backend memory) added to *tally
+// without a wait for the host below kUncountedListMax items.
+template <class B, class Fast, class Part, class Join>
+std::int64_t fast_then_split(Context<B>& ctx, std::int64_t n, std::int8_t* undecided, Fast fast, int parts,
+                             Part part, Join join, std::int64_t* tally = nullptr) {
+  if (n <= 0) return 0;
+  parallel_for(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { undecided[i] = fast(i) ? 0 : 1; });
+  detail::UndecidedList<B> u = detail::undecided_list(ctx, n, undecided, !tally);
+  if (u.bound == 0) return 0;
+  const std::int64_t* lp = u.list.data();
+  std::int64_t* cp = u.cnt.data();
+  split_scratch_free(
+      ctx, u.bound, cp, parts,
+      [=] GDEL_LAMBDA(std::int64_t k, int p, auto work) -> std::int8_t { return part(lp[k], p, work); },
+      [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { join(lp[k], r); });
+  if (!tally) return u.bound;
+  parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { *tally += cp[0]; });
+  return 0;
+}
 
 // Runs fast(i) on all n items (full occupancy); the items for which it returns false
 // (undecided) are compacted and run through exact(i, work) with a private scratch of
