@@ -129,6 +129,26 @@ alternate() {
   done
 }
 
+# The GPU test binaries present in the binaries' folder, a step each: gpu_tests
+gpu_tests() {
+  for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile; do
+    if [ -x "$tbin/$t" ]; then step "$t" 200 "$tbin/$t"; fi
+  done
+}
+
+# uniform, grid and sphere 10^6 (medians of 5) under each GDEL_SPLIT_EXACT value given,
+# ROUNDS times (session 49): split_rounds TAG VALUES...
+split_rounds() {
+  local tag=$1
+  shift
+  for r in $(seq "${ROUNDS:-2}"); do
+    for v in "$@"; do
+      GDEL_SPLIT_EXACT=$v bench "${tag}_split${v}_$r" 60 --dist uniform,grid,sphere --n 1000000 \
+        --methods gdel3d-cuda-dev --repeat 5
+    done
+  done
+}
+
 # The registers and stack per thread of each binary's heaviest kernels (cuobjdump), and of
 # flip_iteration's exact passes: res_usage BINARY... (names in the binaries' folder)
 res_usage() {
@@ -1417,17 +1437,11 @@ PY
     done
     ;;
   s49a)  # session 49: exact proposals a face per thread on integer input (GDEL_SPLIT_EXACT: 0 a tet per thread, 1
-          # the large iterations split (the default), 2 the spread proposals too: removed after s49c, now as 1): the GPU tests, then grid, sphere
-          # and uniform 10^6 with each, medians of 5, two rounds; profiles of grid and sphere with each
-    for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile; do
-      [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"
-    done
-    for r in 1 2; do
-      for v in 0 1 2; do
-        GDEL_SPLIT_EXACT=$v bench "s49a_split${v}_$r" 60 --dist uniform,grid,sphere --n 1000000 \
-          --methods gdel3d-cuda-dev --repeat 5
-      done
-    done
+          # the large iterations split (the default), 2 the spread proposals too: removed after s49c, 2 is now as 1):
+          # the GPU tests, then grid, sphere and uniform 10^6 with each, medians of 5, two rounds; profiles of grid
+          # and sphere with each
+    gpu_tests
+    split_rounds s49a 0 1 2
     for v in 0 1 2; do
       GDEL_SPLIT_EXACT=$v GDEL_PROFILE=1 bench "s49a_prof${v}" 60 --dist grid,sphere --n 1000000 \
         --methods gdel3d-cuda-dev --repeat 1
@@ -1435,12 +1449,7 @@ PY
     ;;
   s49b)  # session 49: s49a's variants again (GDEL_SPLIT_EXACT 0 / 1 / 2: grid, sphere, uniform 10^6, medians of 5,
           # three rounds), then ncu on the flip loop's exact passes (threads per warp instruction, time) with 0 and 2
-    for r in 1 2 3; do
-      for v in 0 1 2; do
-        GDEL_SPLIT_EXACT=$v bench "s49b_split${v}_$r" 60 --dist uniform,grid,sphere --n 1000000 \
-          --methods gdel3d-cuda-dev --repeat 5
-      done
-    done
+    ROUNDS=3 split_rounds s49b 0 1 2
     for v in 0 2; do
       for d in grid sphere; do
         GDEL_SPLIT_EXACT=$v NCU_METRICS=smsp__inst_executed.sum,smsp__thread_inst_executed.sum ncu_kernels \
@@ -1452,15 +1461,8 @@ PY
   s49c)  # session 49: the split's pieces counted in the pass (no count launch) and the other apexes loaded only
           # for faces not locally Delaunay: the GPU tests, GDEL_SPLIT_EXACT 0 / 1 / 2 (three rounds), ncu on the
           # sphere and the grid with 1 and 2, then every generator at 10^6 (two rounds) and uniform 10^7, default
-    for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile; do
-      [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"
-    done
-    for r in 1 2 3; do
-      for v in 0 1 2; do
-        GDEL_SPLIT_EXACT=$v bench "s49c_split${v}_$r" 60 --dist uniform,grid,sphere --n 1000000 \
-          --methods gdel3d-cuda-dev --repeat 5
-      done
-    done
+    gpu_tests
+    ROUNDS=3 split_rounds s49c 0 1 2
     for v in 1 2; do
       GDEL_SPLIT_EXACT=$v NCU_METRICS=smsp__inst_executed.sum,smsp__thread_inst_executed.sum ncu_kernels \
         "s49c_sphere_split$v" 'exact_after_fast|propose_spread|split_scratch_free' gdel-bench --dist sphere \
@@ -1474,14 +1476,8 @@ PY
     ;;
   s49d)  # session 49: the committed code (the split of the small iterations removed): the GPU tests, then
           # GDEL_SPLIT_EXACT 0 / default on uniform, grid and sphere 10^6, medians of 5, two rounds
-    for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile; do
-      [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"
-    done
-    for r in 1 2; do
-      GDEL_SPLIT_EXACT=0 bench "s49d_split0_$r" 60 --dist uniform,grid,sphere --n 1000000 \
-        --methods gdel3d-cuda-dev --repeat 5
-      bench "s49d_default_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
+    gpu_tests
+    split_rounds s49d 0 1  # (1: the default, named s49d_default_ in the recorded run)
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
