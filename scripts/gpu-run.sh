@@ -1479,6 +1479,22 @@ PY
     gpu_tests
     split_rounds s49d 0 1  # (1: the default, named s49d_default_ in the recorded run)
     ;;
+  s49e)  # session 49: the split pieces with the small-integer stage first (GDEL_SMALL_STAGE=1, flip::SmallFirst)
+          # against without: uniform, grid, sphere 10^6, medians of 5, three rounds; ncu on grid and sphere with it.
+          # Run on a build with that code, which was not kept (bench/RESULTS.md, session 49): without it both
+          # halves run the committed code
+    for r in 1 2 3; do
+      for v in 0 1; do
+        GDEL_SMALL_STAGE=$v bench "s49e_small${v}_$r" 60 --dist uniform,grid,sphere --n 1000000 \
+          --methods gdel3d-cuda-dev --repeat 5
+      done
+    done
+    for d in grid sphere; do
+      GDEL_SMALL_STAGE=1 NCU_METRICS=smsp__inst_executed.sum,smsp__thread_inst_executed.sum ncu_kernels \
+        "s49e_${d}_small" 'split_scratch_free' gdel-bench --dist $d --n 1000000 --methods gdel3d-cuda-dev \
+        --repeat 1 --no-verify
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

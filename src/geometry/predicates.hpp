@@ -382,8 +382,11 @@ GDEL_HD int lift_sos_degenerate(const double* const* p, const double* w, const s
 // kernel heavier (gFlip3D's proposals 89 -> 126-148 registers) and uniform input up to
 // 12 % slower, the star splaying engine's kernels slower still, while the grid's
 // proposals gained nothing (their time is the walks' instructions, serialized in a warp,
-// wherever they run): bench/RESULTS.md, session 47. What remains to try is a kernel
-// instance of its own for integer input.
+// wherever they run): bench/RESULTS.md, session 47. Tried first in the exact proposals'
+// own kernel for integer input (a face per thread, session 49): the grid's pass 20 -> 13
+// ms, under the runs' noise, and the sphere 3-7 % slower (its spans are past the stage's,
+// which then only adds work); not kept. Left to try: the stage only where the input's
+// extent keeps every span within it.
 inline constexpr double kSmallOrientSpan = 0x1p14;
 inline constexpr double kSmallInsphereSpan = 0x1p9;
 inline constexpr double kSmallSphereCoord = 0x1p25;
