@@ -1495,6 +1495,11 @@ PY
         --repeat 1 --no-verify
     done
     ;;
+  s49f)  # session 49's review (par::knob_off for the default-off knobs): the GPU tests, then uniform, grid and
+          # sphere 10^6 with the default, medians of 5
+    gpu_tests
+    bench s49f_m6 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -23,8 +23,6 @@
 #pragma once
 
 #include <cstdint>
-#include <cstdlib>
-#include <string>
 
 #include "geometry/predicates.hpp"
 #include "mesh/conventions.hpp"
@@ -189,7 +187,7 @@ struct Geo {
 template <class B>
 bool all_integer_points(par::Context<B>& ctx, const double* xyz, const double* w, std::int64_t n,
                         double scale = 1.0) {
-  if (const char* e = std::getenv("GDEL_EXACT_TIERS"); e && std::string(e) == "0") return false;
+  if (par::knob_off("GDEL_EXACT_TIERS")) return false;
   if (n <= 0) return false;
   const std::int64_t off = par::count_indices(ctx, static_cast<std::size_t>(n), [=] GDEL_LAMBDA(std::int64_t i) {
     return !geom::integer_point(xyz + 3 * i, w ? w[i] : 0.0, scale);

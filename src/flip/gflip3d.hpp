@@ -944,10 +944,7 @@ class GFlip3D {
   // thread (par::fast_then_split: face_proposal, join_face_proposals), not a tet per
   // thread (bench/RESULTS.md, session 49); GDEL_SPLIT_EXACT=0 for measurements: a tet per
   // thread. (propose_spread's small iterations split too measured no better: session 49.)
-  static bool split_exact_setting() {
-    const char* e = std::getenv("GDEL_SPLIT_EXACT");
-    return !(e && std::string(e) == "0");
-  }
+  static bool split_exact_setting() { return !par::knob_off("GDEL_SPLIT_EXACT"); }
 
   // Active sets up to this many tets are proposed and decided in one team
   // (par::team_run: one block on the GPU) instead of some fifteen launches

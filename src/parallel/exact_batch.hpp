@@ -23,7 +23,6 @@
 
 #include <cstdint>
 #include <cstdlib>
-#include <string>
 #include <vector>
 
 #include "parallel/primitives.hpp"
@@ -119,10 +118,7 @@ namespace detail {
 // Whether scratch-free passes spread their items (scratch_kernel); GDEL_SPREAD_ITEMS=0
 // for measurements: no.
 inline bool spread_items() {
-  static const bool v = [] {
-    const char* e = std::getenv("GDEL_SPREAD_ITEMS");
-    return !(e && std::string(e) == "0");
-  }();
+  static const bool v = !knob_off("GDEL_SPREAD_ITEMS");
   return v;
 }
 // The warps of `kernel` the device holds at once in blocks of `block` threads (its

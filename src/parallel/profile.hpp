@@ -30,6 +30,11 @@ struct ProfileEntry {
 using ProfileTotals = std::vector<ProfileEntry>;
 
 inline bool profiling_requested() { return std::getenv("GDEL_PROFILE") != nullptr; }
+// A measurement knob that turns a default path off: the variable `name` set to "0".
+inline bool knob_off(const char* name) {
+  const char* e = std::getenv(name);
+  return e && std::string(e) == "0";
+}
 
 // Totals per name: mark k (name names[k]) closes the interval (t[k], t[k+1]], whose
 // memory peak is peaks[k]; t holds one more entry than names (t[0]: the origin).
