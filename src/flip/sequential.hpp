@@ -32,7 +32,9 @@
 // points later (Knobs::hold: its next points mostly touch the same blocks) or at once
 // after a conflict. Finding a tet taken by another thread (only near the pieces'
 // borders), it restores the logged tets and defers the point; the deferred points are
-// inserted after the round by one thread. Each insertion is thus atomic with respect to the others, so the result is the
+// inserted after the round by one thread. A cavity insertion takes every tet it will
+// write (its search reads them, its claims take the new slots) before its first write,
+// so it has nothing to restore and logs nothing (Worker::log_). Each insertion is thus atomic with respect to the others, so the result is the
 // one a sequential insertion in some order gives: the unique Delaunay triangulation of
 // the perturbed points, whatever the threads' timing (only the tets' slots differ from
 // run to run; Options::canonical_order fixes the output order).
@@ -185,6 +187,7 @@ class SequentialInsertion {
                        std::int64_t& exact) {
     using I64 = std::int64_t;
     constexpr std::int8_t kDead = -1, kInfTet = -100;  // else: the orientation (> 0 kept, 0 flat)
+    constexpr I64 kAhead = 16;
     const I64 n = slots();
     par::Context<B>& ctx = mesh_.context();
     const Cell* cs = cells_.data();
@@ -194,6 +197,9 @@ class SequentialInsertion {
     exact += par::two_stage_signs(
         ctx, n, sg,
         [=](I64 t) -> std::int8_t {
+          if (t + kAhead < n)  // the points of a tet a few slots on (their reads wait on the cache)
+            for (int i = 0; i < 4; ++i)
+              if (cs[t + kAhead].v[i] >= 0) __builtin_prefetch(g.p(cs[t + kAhead].v[i]));
           const vid_t* v = cs[t].v;
           if (v[0] == kNoVertex) return kDead;
           if (Geo::inf_slot(v, g.inf) >= 0) return kInfTet;
@@ -211,6 +217,9 @@ class SequentialInsertion {
     vid_t* op = tets.data();
     std::int32_t* np = nbr.data();
     par::parallel_for(ctx, n, [=](I64 t) {
+      if (t + kAhead < n)  // the neighbours' numbers a few slots on
+        for (int i = 0; i < 4; ++i)
+          if (cs[t + kAhead].n[i] >= 0) __builtin_prefetch(nm + tet_of(cs[t + kAhead].n[i]));
       if (nm[t + 1] == nm[t]) return;
       const Cell& c = cs[t];
       const I64 d = nm[t];
@@ -298,7 +307,7 @@ class SequentialInsertion {
     const std::size_t nb = (cells_.size() >> kBlockShift) + 1;
     owner_.reset(new std::atomic<std::uint8_t>[nb]);
     for (std::size_t b = 0; b < nb; ++b) owner_[b].store(0, std::memory_order_relaxed);
-    logged_.assign(cells_.size(), 0);
+    if (!knobs_.cavity) logged_.assign(cells_.size(), 0);
     // each piece starts from its first point's tet, found here, before the threads run
     std::vector<std::int64_t> cut(threads_ + 1);
     for (unsigned w = 0; w <= threads_; ++w) cut[w] = n * w / threads_;
@@ -358,6 +367,7 @@ class SequentialInsertion {
       acquire(o, t);
     }
     void acquire(std::atomic<std::uint8_t>& o, tid_t t) {
+      if (writing_) throw std::logic_error("gflip3d (one point per round): a cavity insertion took a tet after its first write");
       std::uint8_t z = 0;
       if (!o.compare_exchange_strong(z, id_, std::memory_order_acquire)) throw Conflict{};
       held_.push_back(t >> kBlockShift);
@@ -371,6 +381,7 @@ class SequentialInsertion {
       Cell& c = cs_[t];
       if (!par_) return c;
       take(t);
+      if (!log_) return c;
       std::uint8_t& lg = logged_[static_cast<std::size_t>(t)];  // the block holder's alone
       if (!lg) log(t, lg);
       return c;
@@ -389,6 +400,7 @@ class SequentialInsertion {
       force_ = parallel ? s_->knobs_.force_conflict : 0;
       hold_ = s_->knobs_.hold;
       cavity_ = s_->knobs_.cavity;
+      log_ = parallel && !cavity_;
     }
 
     // --- slots -------------------------------------------------------------------------
@@ -427,7 +439,7 @@ class SequentialInsertion {
         t = static_cast<tid_t>(next_++);
       }
       if (par_) {
-        logged_[static_cast<std::size_t>(t)] = 1;
+        if (log_) logged_[static_cast<std::size_t>(t)] = 1;
         claimed_.push_back(t);
       }
       return t;
@@ -661,6 +673,11 @@ class SequentialInsertion {
       cav_.push_back(t0);
       for (std::size_t k = 0; k < cav_.size(); ++k) {
         const Cell c = rd(cav_[k]);
+        for (int i = 0; i < 4; ++i)  // the neighbours' records and marks, fetched together
+          if (c.n[i] >= 0) {
+            __builtin_prefetch(&cs_[tet_of(c.n[i])]);
+            __builtin_prefetch(&mark_[static_cast<std::size_t>(tet_of(c.n[i]))]);
+          }
         for (int i = 0; i < 4; ++i) {
           const std::int32_t e = c.n[i];
           if (e >= 0) {
@@ -688,6 +705,7 @@ class SequentialInsertion {
       const std::size_t nb = bnd_.size(), nc = cav_.size();
       slot_.assign(cav_.begin(), cav_.begin() + static_cast<std::ptrdiff_t>(std::min(nb, nc)));
       for (std::size_t k = nc; k < nb; ++k) slot_.push_back(claim());
+      writing_ = par_ && !log_;  // no conflict from here on (nothing logged to undo one)
       for (std::size_t k = nb; k < nc; ++k) kill(cav_[k]);
       for (std::size_t k = 0; k < nb; ++k) wr(slot_[k]);  // taken and logged before the writes
       if (++stamp_ == 0) {  // wrapped: every entry free again
@@ -729,6 +747,7 @@ class SequentialInsertion {
         }
       }
       newest_ = slot_[nb - 1];
+      writing_ = false;
       unmark();
       ++c_.inserted;
     }
@@ -768,7 +787,8 @@ class SequentialInsertion {
       }
       for (tid_t t : freed_) free_.push_back(t);
       freed_.clear();
-      for (tid_t t : claimed_) logged_[static_cast<std::size_t>(t)] = 0;
+      if (log_)
+        for (tid_t t : claimed_) logged_[static_cast<std::size_t>(t)] = 0;
       claimed_.clear();
       for (const auto& u : undo_) logged_[static_cast<std::size_t>(u.first)] = 0;
       undo_.clear();
@@ -796,7 +816,12 @@ class SequentialInsertion {
     std::vector<vid_t> deferred_;
     std::int64_t takes_ = 0, force_ = 0;  // Knobs::force_conflict
     std::int64_t hold_ = 1, since_release_ = 0;  // Knobs::hold; insertions since the blocks were released
-    bool par_ = false;                    // in a parallel round: take, log
+    bool par_ = false;                    // in a parallel round: take, log (if log_)
+    // par_ and flips: a flip writes before the next one reads, so a conflict finds tets
+    // written; insert_cavity's claims come before its first write, its other writes go to
+    // tets its search took: a conflict finds nothing written, and nothing is logged
+    bool log_ = false;
+    bool writing_ = false;  // insert_cavity without log_ between its first write and its end
     Cell* cs_ = nullptr;                  // the records (s_->cells_; moved only by a grow)
     std::atomic<std::uint8_t>* own_ = nullptr;
     std::uint8_t* logged_ = nullptr;
