@@ -51,12 +51,17 @@ struct HostOutput {
   }
   template <class B>
   void tets(Buffer<std::int32_t, B>& tv, Buffer<std::int32_t, B>& tn, Triangulation& out) {
-    if constexpr (B::is_device) {
-      out.tets = tv.to_host();
-      out.neighbors = tn.to_host();
-    } else {  // two host threads: most of a copy's time is the new vector's page faults
-      par::on_host_threads(2, [&](std::size_t k) { (k == 0 ? out.tets : out.neighbors) = (k == 0 ? tv : tn).to_host(); });
-    }
+    out.tets = tv.to_host();
+    out.neighbors = tn.to_host();
+  }
+  // Host backends: an extraction that writes the results into the Triangulation's arrays
+  // itself (SequentialInsertion::extract's room), with nothing to copy after. The two
+  // arrays are made on two threads: most of their time is their pages' first touch.
+  auto room(Triangulation& out) {
+    return [&out](std::int64_t k) {
+      par::on_host_threads(2, [&](std::size_t j) { (j == 0 ? out.tets : out.neighbors).resize(static_cast<std::size_t>(4 * k)); });
+      return std::pair<vid_t*, std::int32_t*>{out.tets.data(), out.neighbors.data()};
+    };
   }
 };
 
@@ -88,14 +93,18 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   st.algorithm = opt.algorithm == Algorithm::gstar4d ? "gstar4d" : exact ? "gdel3d" : "gflip3d";
   const I64 n = static_cast<I64>(points.size() / 3);
   st.points = n;
-  // the results to the caller, the output stage's time (from t_out), the run's totals
-  auto finish = [&](Buffer<vid_t, B>& tv, Buffer<std::int32_t, B>& tn, auto t_out) {
-    sink.tets(tv, tn, out);
-    par::mark(ctx, "output: results to caller");
+  // finished: the output stage's time (from t_out), the run's totals; finish: the results
+  // to the caller first
+  auto finished = [&](auto t_out) {
     st.stages.push_back({"output", since(t_out)});
     st.peak_bytes = static_cast<I64>(ctx.memory().peak());
     st.seconds = since(t_start);
     report_profile(ctx, st);
+  };
+  auto finish = [&](Buffer<vid_t, B>& tv, Buffer<std::int32_t, B>& tn, auto t_out) {
+    sink.tets(tv, tn, out);
+    par::mark(ctx, "output: results to caller");
+    finished(t_out);
   };
 
   // --- prepare: upload, duplicates, spatial order ------------------------------------
@@ -155,12 +164,10 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   t0 = std::chrono::steady_clock::now();
   // One point per round leaves the exact Delaunay triangulation (flip/sequential.hpp) in
   // its records: the exact output comes straight from them (no repair, no mesh).
-  if (exact && sequential) {
-    Buffer<vid_t, B> tv(ctx);
-    Buffer<std::int32_t, B> tn(ctx);
-    if (alg.extract_one_point_per_round(tv, tn, sid.data(), st.flat_tets_removed)) {
-      par::mark(ctx, "one point per round: extract");
-      finish(tv, tn, t0);
+  if constexpr (!B::is_device) {
+    if (exact && sequential && alg.extract_one_point_per_round(sink.room(out), sid.data(), st.flat_tets_removed)) {
+      par::mark(ctx, "one point per round: extract into the results");
+      finished(t0);
       return out;
     }
   }

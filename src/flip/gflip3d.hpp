@@ -272,14 +272,15 @@ class GFlip3D {
   // After one point per round, before mesh() is called: the finite tets of the exact
   // Delaunay triangulation straight from the records (SequentialInsertion::extract:
   // vertices as sid[v], neighbours -1 across the hull, flat tets dropped and counted in
-  // flat). False, with nothing written, when the mesh holds the result instead.
-  bool extract_one_point_per_round(Buffer<vid_t, B>& tets, Buffer<std::int32_t, B>& nbr, const std::int64_t* sid,
-                                   std::int64_t& flat) {
+  // flat; room(k): the arrays for k tets, see there). False, with nothing written, when
+  // the mesh holds the result instead.
+  template <class Room>
+  bool extract_one_point_per_round(Room room, const std::int64_t* sid, std::int64_t& flat) {
     if constexpr (B::is_device) {
       return false;
     } else {
       if (!seq_) return false;
-      flat = seq_->extract(tets, nbr, sid, st_.exact_evaluations);
+      flat = seq_->extract(room, sid, st_.exact_evaluations);
       seq_.reset();
       return true;
     }

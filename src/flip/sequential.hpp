@@ -181,10 +181,12 @@ class SequentialInsertion {
   // as sid[v] (the input ids), neighbours numbered, -1 across the hull. Tets with ∞ are
   // dropped, and exactly flat ones (orient3d = 0: only on coplanar hull faces, docs/
   // gdel3d.md); a face of a flat tet's neighbour is matched by its vertices
-  // (mesh::match_open_faces), or is a hull face. Returns the flat tets dropped; adds the
-  // exact orientations to `exact`. Frees the records.
-  std::int64_t extract(par::Buffer<vid_t, B>& tets, par::Buffer<std::int32_t, B>& nbr, const std::int64_t* sid,
-                       std::int64_t& exact) {
+  // (mesh::match_open_faces), or is a hull face. room(k) gives the arrays for k tets (4 k
+  // vertex ids, 4 k neighbours: host memory, e.g. the caller's own, so that the output is
+  // not copied again). Returns the flat tets dropped; adds the exact orientations to
+  // `exact`. Frees the records.
+  template <class Room>
+  std::int64_t extract(Room room, const std::int64_t* sid, std::int64_t& exact) {
     using I64 = std::int64_t;
     constexpr std::int8_t kDead = -1, kInfTet = -100;  // else: the orientation (> 0 kept, 0 flat)
     constexpr I64 kAhead = 16;
@@ -212,10 +214,7 @@ class SequentialInsertion {
     par::parallel_for(ctx, n, [=](I64 t) { nm[t] = sg[t] > 0 ? 1 : 0; });
     const I64 nkeep = par::counts_to_offsets(ctx, nm, static_cast<std::size_t>(n));
     const I64 flat = par::count_indices(ctx, static_cast<std::size_t>(n), [=](I64 t) { return sg[t] == 0; });
-    tets.resize(static_cast<std::size_t>(4 * nkeep));
-    nbr.resize(static_cast<std::size_t>(4 * nkeep));
-    vid_t* op = tets.data();
-    std::int32_t* np = nbr.data();
+    const auto [op, np] = room(nkeep);
     par::parallel_for(ctx, n, [=](I64 t) {
       if (t + kAhead < n)  // the neighbours' numbers a few slots on
         for (int i = 0; i < 4; ++i)
@@ -232,7 +231,7 @@ class SequentialInsertion {
     num.release();
     sign.release();
     cells_.release();
-    if (flat > 0) mesh::match_open_faces(ctx, tets, nbr, nkeep);
+    if (flat > 0) mesh::match_open_faces(ctx, op, np, nkeep);
     return flat;
   }
 

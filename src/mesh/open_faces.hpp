@@ -10,17 +10,15 @@
 
 namespace gdel::mesh {
 
-// tets: 4 nout vertex ids; nbr: 4 nout neighbours (tet number, -1 on the hull, -2 open).
+// tp: 4 nout vertex ids; np: 4 nout neighbours (tet number, -1 on the hull, -2 open).
 // Every open face gets the other tet with the same three vertices, found by sorting the
 // open faces' sorted vertex triples (two stable passes: the largest vertex, then the
 // other two), or -1 (a hull face) when it has no partner.
+// (tp, np: backend memory; on host backends any host memory, e.g. the caller's arrays)
 template <class B>
-void match_open_faces(par::Context<B>& ctx, const par::Buffer<vid_t, B>& tets, par::Buffer<std::int32_t, B>& nbr,
-                      std::int64_t nout) {
+void match_open_faces(par::Context<B>& ctx, const vid_t* tp, std::int32_t* np, std::int64_t nout) {
   using I64 = std::int64_t;
   using U64 = std::uint64_t;
-  std::int32_t* np = nbr.data();
-  const vid_t* tp = tets.data();
   auto open = [=] GDEL_LAMBDA(I64 f) { return np[f] == -2; };
   // counted first: few open faces beside the 4 nout faces
   const std::size_t k = static_cast<std::size_t>(par::count_indices(ctx, static_cast<std::size_t>(4 * nout), open));

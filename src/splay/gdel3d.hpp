@@ -440,7 +440,7 @@ class GDel3D {
     tnum.release();
     flat.release();
     sp_.write_star_tets(snum, op, np, nkeep);
-    mesh::match_open_faces(ctx_, tets, nbr, nout);
+    mesh::match_open_faces(ctx_, tets.data(), nbr.data(), nout);
   }
 
  private:

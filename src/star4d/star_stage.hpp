@@ -243,7 +243,7 @@ class StarStage {
     tets.resize(static_cast<std::size_t>(4 * n));
     nbr.resize(static_cast<std::size_t>(4 * n));
     sp_.write_star_tets(num, tets.data(), nbr.data(), 0);
-    mesh::match_open_faces(ctx_, tets, nbr, n);
+    mesh::match_open_faces(ctx_, tets.data(), nbr.data(), n);
     res_.tets = n;
   }
 
