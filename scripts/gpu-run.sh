@@ -1500,6 +1500,15 @@ PY
     gpu_tests
     bench s49f_m6 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ;;
+  s50a)  # session 50 (not run yet: no device was lent): the CPU backend on the device host's 16 threads after
+          # the cavity insertions stopped logging and the deferred points got parallel passes, against CGAL
+          # sequential and parallel in the same process (session 27's s27g: 1.10-1.30 s against 0.78-0.85);
+          # 16 threads' deferral counts in the rows' notes
+    for r in 1 2; do
+      bench "s50a_u$r" 150 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal-par,cgal --repeat 3
+    done
+    bench s50a_gs 200 --dist grid,sphere,thin_shell --n 1000000 --methods gdel3d-cpu,cgal-par --repeat 3
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
