@@ -31,8 +31,9 @@
 // compare-and-swap), logs each tet before its first write, and releases them a few
 // points later (Knobs::hold: its next points mostly touch the same blocks) or at once
 // after a conflict. Finding a tet taken by another thread (only near the pieces'
-// borders), it restores the logged tets and defers the point; the deferred points are
-// inserted after the round by one thread. A cavity insertion takes every tet it will
+// borders), it restores the logged tets and defers the point; the deferred points go
+// again after the round, on all threads in pieces about the borders, and the last of them
+// on one thread (parallel_round). A cavity insertion takes every tet it will
 // write (its search reads them, its claims take the new slots) before its first write,
 // so it has nothing to restore and logs nothing (Worker::log_). Each insertion is thus atomic with respect to the others, so the result is the
 // one a sequential insertion in some order gives: the unique Delaunay triangulation of
@@ -314,8 +315,8 @@ class SequentialInsertion {
     // The deferred points lie about the borders of the pieces (where two threads met). They
     // go again on all threads, in pieces centred on those borders: cut at the middles of
     // the pieces before (by id: the curve), while that leaves fewer; the rest on this
-    // thread. (On 16 threads 3-4 % of the points are deferred at 10^6: one thread's work
-    // after every round, else.)
+    // thread. (With 16 threads 3-4 % of the points are deferred at 10^6, counted
+    // oversubscribed on 2 cores: one thread's work after every round, else.)
     for (int pass = 1; pass < kDeferredPasses; ++pass) {
       const std::int64_t nr = static_cast<std::int64_t>(rest.size());
       if (nr < std::max<std::int64_t>(knobs_.parallel_min, threads_)) break;
