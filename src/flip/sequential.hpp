@@ -33,12 +33,13 @@
 // after a conflict. Finding a tet taken by another thread (only near the pieces'
 // borders), it restores the logged tets and defers the point; the deferred points go
 // again after the round, on all threads in pieces about the borders, and the last of them
-// on one thread (parallel_round). A cavity insertion takes every tet it will
-// write (its search reads them, its claims take the new slots) before its first write,
-// so it has nothing to restore and logs nothing (Worker::log_). Each insertion is thus atomic with respect to the others, so the result is the
-// one a sequential insertion in some order gives: the unique Delaunay triangulation of
-// the perturbed points, whatever the threads' timing (only the tets' slots differ from
-// run to run; Options::canonical_order fixes the output order).
+// on one thread (parallel_round). A cavity insertion takes every tet it will write (its
+// search reads them, its claims take the new slots) before its first write, so it has
+// nothing to restore and logs nothing (Worker::log_). Each insertion is thus atomic with
+// respect to the others, so the result is the one a sequential insertion in some order
+// gives: the unique Delaunay triangulation of the perturbed points, whatever the threads'
+// timing (only the tets' slots differ from run to run; Options::canonical_order fixes
+// the output order).
 //
 // Host only: the CPU backend's buffers are host memory (a simplification of the thesis's
 // parallel rounds for few cores: the rounds stay available, FlipConfig::sequential =
@@ -312,6 +313,7 @@ class SequentialInsertion {
     std::vector<std::int64_t> cut(threads_ + 1);
     for (unsigned w = 0; w <= threads_; ++w) cut[w] = n * w / threads_;
     std::vector<vid_t> rest = insert_pieces(pts, cut);
+    std::vector<vid_t> prev;  // a later pass's points (pts then points here), for the next cut
     // The deferred points lie about the borders of the pieces (where two threads met). They
     // go again on all threads, in pieces centred on those borders: cut at the middles of
     // the pieces before (by id: the curve), while that leaves fewer; the rest on this
@@ -330,15 +332,14 @@ class SequentialInsertion {
       mid.push_back(nr);
       std::vector<vid_t> more = insert_pieces(rest.data(), mid);
       const bool fewer = more.size() < rest.size();
-      pts_ = std::move(rest);  // (the pieces' ids, for the next cut)
-      pts = pts_.data();
+      prev = std::move(rest);
+      pts = prev.data();
       cut = std::move(mid);
       rest = std::move(more);
       if (!fewer) break;
     }
     w0.begin(false);
     for (vid_t q : rest) w0.insert_point(q);
-    pts_ = {};
   }
 
   // The points pts[cut[j] .. cut[j + 1]) as piece j, the pieces on the host threads (each
@@ -880,7 +881,6 @@ class SequentialInsertion {
   std::unique_ptr<std::atomic<std::uint8_t>[]> owner_;  // parallel rounds: holder of each block of tets
   std::vector<std::uint8_t> logged_;  // parallel rounds: tet logged in its holder's transaction
   std::vector<std::uint8_t> mark_;    // Knobs::cavity: a tet's mark in its holder's search (0 between points)
-  std::vector<vid_t> pts_;            // parallel_round: the points of its last pass
   Knobs knobs_;
   unsigned threads_ = 1;
   std::vector<Worker> workers_;
