@@ -710,13 +710,18 @@ class SequentialInsertion {
       mark_[static_cast<std::size_t>(t0)] = 1;
       seen_.push_back(t0);
       cav_.push_back(t0);
-      for (std::size_t k = 0; k < cav_.size(); ++k) {
-        const Cell c = rd(cav_[k]);
-        for (int i = 0; i < 4; ++i)  // the neighbours' records and marks, fetched together
+      // A tet's neighbours' records and marks are fetched when it joins the region, well
+      // before its turn in the search (the search waits on them, not on the tests).
+      auto fetch_around = [this](const Cell& c) {
+        for (int i = 0; i < 4; ++i)
           if (c.n[i] >= 0) {
             __builtin_prefetch(&cs_[tet_of(c.n[i])]);
             __builtin_prefetch(&mark_[static_cast<std::size_t>(tet_of(c.n[i]))]);
           }
+      };
+      fetch_around(cs_[t0]);
+      for (std::size_t k = 0; k < cav_.size(); ++k) {
+        const Cell c = rd(cav_[k]);
         for (int i = 0; i < 4; ++i) {
           const std::int32_t e = c.n[i];
           if (e >= 0) {
@@ -730,6 +735,7 @@ class SequentialInsertion {
               seen_.push_back(u);
               if (in) {
                 cav_.push_back(u);
+                fetch_around(uc);
                 continue;
               }
             }
