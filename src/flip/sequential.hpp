@@ -61,6 +61,7 @@
 #include <omp.h>
 
 #include "flip/flip_kernels.hpp"
+#include "geometry/filters_simd.hpp"
 #include "gdel/errors.hpp"
 #include "mesh/open_faces.hpp"
 #include "mesh/tet_mesh.hpp"
@@ -388,6 +389,33 @@ class SequentialInsertion {
       if (r != par::kUndecided) return r;
       ++c_.exact;
       return g_.template insphere<true>(t, e, work_.data());
+    }
+    // in[j] = insphere(q[j]->v, p) > 0 for j < n (n <= 4): the finite tets' filters
+    // together (geom::insphere_filter4, one per SIMD lane) when there are several, the
+    // rest as insphere() does.
+    void insphere_batch(const Cell* const* q, int n, vid_t p, bool* in) {
+      const double* pts[4][4];
+      int lane[4], nf = 0;
+      for (int j = 0; j < n; ++j) {
+        if (Geo::inf_slot(q[j]->v, g_.inf) >= 0) {
+          in[j] = insphere(q[j]->v, p) > 0;
+          continue;
+        }
+        for (int i = 0; i < 4; ++i) pts[nf][i] = g_.p(q[j]->v[i]);
+        lane[nf++] = j;
+      }
+      if (nf == 1) in[lane[0]] = insphere(q[lane[0]]->v, p) > 0;
+      if (nf <= 1) return;
+      int s[4];
+      geom::insphere_filter4(pts, g_.p(p), nf, s);
+      for (int f = 0; f < nf; ++f) {
+        int r = Geo::filter_answer(s[f]);
+        if (r == par::kUndecided) {
+          ++c_.exact;
+          r = g_.template insphere<true>(q[lane[f]]->v, p, work_.data());
+        }
+        in[lane[f]] = r > 0;
+      }
     }
     int face_flip_any(const vid_t* bv, const vid_t* apex, int i) {
       const int f = face_flip<false>(g_, bv, apex, i, nullptr);
@@ -722,25 +750,38 @@ class SequentialInsertion {
       fetch_around(cs_[t0]);
       for (std::size_t k = 0; k < cav_.size(); ++k) {
         const Cell c = rd(cav_[k]);
+        // Its neighbours taken in face order, the untested ones' tests made together
+        // (insphere_batch), then each face: inside, or a boundary face.
+        std::int8_t face[4];  // -1: a neighbour inside (no boundary), -2: boundary, j >= 0: test j
+        const Cell* q[4];
+        int nq = 0;
         for (int i = 0; i < 4; ++i) {
-          const std::int32_t e = c.n[i];
-          if (e >= 0) {
-            const tid_t u = tet_of(e);
-            const Cell& uc = rd(u);  // taken before its mark is read: another thread's search marks its own tets
-            std::uint8_t& m = mark_[static_cast<std::size_t>(u)];
-            if (m == 1) continue;  // inside: no boundary
-            if (m == 0) {
-              const bool in = insphere(uc.v, p) > 0;
-              m = in ? 1 : 2;
-              seen_.push_back(u);
-              if (in) {
-                cav_.push_back(u);
-                fetch_around(uc);
-                continue;
-              }
+          face[i] = -2;
+          if (c.n[i] < 0) continue;
+          const Cell& uc = rd(tet_of(c.n[i]));  // taken before its mark is read: another thread's search marks its own tets
+          const std::uint8_t m = mark_[static_cast<std::size_t>(tet_of(c.n[i]))];
+          if (m == 1) face[i] = -1;
+          if (m == 0) {
+            face[i] = static_cast<std::int8_t>(nq);
+            q[nq++] = &uc;
+          }
+        }
+        bool in[4];
+        if (nq > 0) insphere_batch(q, nq, p, in);
+        for (int i = 0; i < 4; ++i) {
+          if (face[i] == -1) continue;
+          if (face[i] >= 0) {
+            const tid_t u = tet_of(c.n[i]);
+            const bool inside = in[face[i]];
+            mark_[static_cast<std::size_t>(u)] = inside ? 1 : 2;
+            seen_.push_back(u);
+            if (inside) {
+              cav_.push_back(u);
+              fetch_around(*q[face[i]]);
+              continue;
             }
           }
-          Bnd b{{c.v[0], c.v[1], c.v[2], c.v[3]}, e, i};
+          Bnd b{{c.v[0], c.v[1], c.v[2], c.v[3]}, c.n[i], i};
           b.v[i] = p;
           bnd_.push_back(b);
         }

@@ -15,6 +15,7 @@
 
 #include "cpu/predicates_oracle.hpp"
 #include "geometry/expansion.hpp"
+#include "geometry/filters_simd.hpp"
 #include "geometry/predicates.hpp"
 
 using namespace gdel::geom;
@@ -260,6 +261,52 @@ TEST(FilterBounds, UncertainOnOverflowNanAndUnderflow) {
   EXPECT_EQ(insphere(o, sx, sy, sz, sc, work.data()), 1);  // the exact stage decides
   EXPECT_EQ(power_filter(o, x, y, z, c, 0, 0, 0, 0, nan), kUncertain);
   EXPECT_EQ(power_filter(o, x, y, z, c, 0, 0, 0, 0, inf), kUncertain);
+}
+
+// insphere_filter4 (the CPU backend's cavity search tests a tet's neighbours in SIMD lanes)
+// answers as insphere_filter, lane by lane and for every lane count, on random,
+// near-degenerate and degenerate cases and at the filter's limits (NaN, infinity,
+// overflow, underflow), and every sign it gives is the exact one.
+TEST(FilterBounds, InsphereFilter4AnswersAsTheScalarFilter) {
+  Generator g(77);
+  Oracle o;
+  long compared = 0, uncertain = 0, mismatches = 0, signs = 0, wrong = 0;
+  const double specials[] = {NAN, INFINITY, -INFINITY, 0x1p600, 0x1p-300, 0x1p-90, 0.0};
+  for (long t = 0; t < 200000; ++t) {
+    Case k[4];
+    for (int j = 0; j < 4; ++j) {
+      const int sel = static_cast<int>((t + j) % 8);
+      k[j] = sel < 3 ? g.degenerate(static_cast<int>(t)) : g.random(sel == 3 ? 0x1p198 : sel == 4 ? 0x1p-120 : 1.0);
+      if (t % 97 == 0) k[j].p[g.integer(0, 3)][g.integer(0, 2)] = specials[g.integer(0, 6)];
+    }
+    const double* pts[4][4];
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) pts[j][i] = k[j].p[i];
+    const double* e = k[0].p[4];  // the four tests share their fifth point, as in a cavity search
+    for (int n = 1; n <= 4; ++n) {
+      int out[4] = {7, 7, 7, 7};
+      insphere_filter4(pts, e, n, out);
+      for (int j = 0; j < n; ++j) {
+        const int want = insphere_filter(pts[j][0], pts[j][1], pts[j][2], pts[j][3], e);
+        ++compared;
+        uncertain += want == kUncertain;
+        if (out[j] != want && ++mismatches <= 10)
+          ADD_FAILURE() << "lane " << j << " of " << n << ": " << out[j] << " vs " << want << " " << describe(k[j], 4);
+        if (n == 4 && t % 97 != 0 && out[j] != kUncertain) {  // a sign is the exact one (GMP)
+          Case c = k[j];
+          for (int d = 0; d < 3; ++d) c.p[4][d] = e[d];
+          o.load(c, 5, false);
+          ++signs;
+          if (out[j] != o.lifted() && ++wrong <= 10) ADD_FAILURE() << "lane " << j << ": not the exact sign " << describe(c, 5);
+        }
+      }
+    }
+  }
+  std::printf("[insphere_filter4] %ld lanes compared, %ld uncertain; %ld signs checked against GMP\n", compared,
+              uncertain, signs);
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(uncertain, compared / 100);  // the degenerate families reach the uncertain answers
 }
 
 // =========================================================================================
