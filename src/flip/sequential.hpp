@@ -535,11 +535,29 @@ class SequentialInsertion {
         rng_ ^= rng_ >> 17;
         rng_ ^= rng_ << 5;
         const int k0 = static_cast<int>(rng_ & 3u);
+        // The faces from k0 on (not the one come through): the first that q is beyond is
+        // the exit. Their filters run together (geom::orient3d_filter4, one per SIMD lane);
+        // an undecided one goes exact when its turn comes, as orient() does.
+        int face[4], nf = 0;
+        for (int k = 0; k < 4; ++k)
+          if (((k0 + k) & 3) != from) face[nf++] = (k0 + k) & 3;
+        const double* pts[4][3];
+        for (int j = 0; j < nf; ++j)
+          for (int m = 0; m < 3; ++m) pts[j][m] = g_.p(c.v[face_vertex(face[j], m)]);
+        int s[4];
+        geom::orient3d_filter4(pts, g_.p(q), nf, s);
         int exit = -1;
-        for (int k = 0; k < 4 && exit < 0; ++k) {
-          const int i = (k0 + k) & 3;
-          if (i == from) continue;
-          if (orient(c.v[face_vertex(i, 0)], c.v[face_vertex(i, 1)], c.v[face_vertex(i, 2)], q) < 0) exit = i;
+        for (int j = 0; j < nf && exit < 0; ++j) {
+          const vid_t a = c.v[face_vertex(face[j], 0)], b = c.v[face_vertex(face[j], 1)];
+          const vid_t d = c.v[face_vertex(face[j], 2)];
+          int r = Geo::filter_answer(s[j]);
+          if (r != par::kUndecided) {
+            if (a == g_.inf || b == g_.inf || d == g_.inf) r = -r;  // as Geo::orient_fast
+          } else {
+            ++c_.exact;
+            r = g_.orient_exact(a, b, d, q, work_.data());
+          }
+          if (r < 0) exit = face[j];
         }
         if (exit < 0) return t;
         from = face_of(c.n[exit]);

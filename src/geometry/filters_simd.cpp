@@ -1,9 +1,9 @@
-// insphere_filter4: detail::lifted_filter<false> (filters.hpp) on four tests at once, one
-// per lane of a vector of doubles. Every lane goes through the same IEEE binary64
+// insphere_filter4 and orient3d_filter4: detail::lifted_filter<false> and orient3d_filter
+// (filters.hpp) on four tests at once, one per lane of a vector of doubles. Every lane goes through the same IEEE binary64
 // operations, round to nearest, in the same order as the scalar filter (the build's
 // -ffp-contract=off keeps every product and sum apart, as fp.hpp requires), so its
 // answer is the scalar filter's bit for bit: tests/cpu/predicates.cpp
-// (FilterBounds.InsphereFilter4AnswersAsTheScalarFilter) holds the two together.
+// (FilterBounds.SimdFiltersAnswerAsTheScalarFilters) holds them together.
 //
 // Why a second text of the same arithmetic instead of one template over the number type:
 // that template was tried (session 51), and nvcc then inlined differently in the exact
@@ -26,6 +26,33 @@ inline __attribute__((always_inline)) V4 vabs(V4 a) {
 }
 inline __attribute__((always_inline)) V4 vgreater(V4 a, V4 b) { return a > b ? a : b; }
 }  // namespace
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+__attribute__((target_clones("avx2", "default")))
+#endif
+void orient3d_filter4(const double* const (*t)[3], const double* d, int n, int* out) {
+  // Lanes past n repeat lane 0 (their answers are not written).
+  const int k1 = n > 1 ? 1 : 0, k2 = n > 2 ? 2 : 0, k3 = n > 3 ? 3 : 0;
+  V4 x[3], y[3], z[3];  // the points a, b, c of each lane
+  for (int i = 0; i < 3; ++i) {
+    x[i] = V4{t[0][i][0], t[k1][i][0], t[k2][i][0], t[k3][i][0]};
+    y[i] = V4{t[0][i][1], t[k1][i][1], t[k2][i][1], t[k3][i][1]};
+    z[i] = V4{t[0][i][2], t[k1][i][2], t[k2][i][2], t[k3][i][2]};
+  }
+  const V4 ux = x[1] - x[0], uy = y[1] - y[0], uz = z[1] - z[0];
+  const V4 vx = x[2] - x[0], vy = y[2] - y[0], vz = z[2] - z[0];
+  const V4 wx = d[0] - x[0], wy = d[1] - y[0], wz = d[2] - z[0];
+  const V4 mx = vy * wz - vz * wy;
+  const V4 my = vz * wx - vx * wz;
+  const V4 mz = vx * wy - vy * wx;
+  const V4 det = (ux * mx + uy * my) + uz * mz;
+  const V4 px = vabs(vy) * vabs(wz) + vabs(vz) * vabs(wy);
+  const V4 py = vabs(vz) * vabs(wx) + vabs(vx) * vabs(wz);
+  const V4 pz = vabs(vx) * vabs(wy) + vabs(vy) * vabs(wx);
+  const V4 perm = (vabs(ux) * px + vabs(uy) * py) + vabs(uz) * pz;
+  for (int k = 0; k < n; ++k)
+    out[k] = detail::filter_decide(det[k], perm[k], bounds::kOrient3dThreshold, bounds::kOrient3dRoundings);
+}
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 __attribute__((target_clones("avx2", "default")))

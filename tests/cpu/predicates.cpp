@@ -263,11 +263,12 @@ TEST(FilterBounds, UncertainOnOverflowNanAndUnderflow) {
   EXPECT_EQ(power_filter(o, x, y, z, c, 0, 0, 0, 0, inf), kUncertain);
 }
 
-// insphere_filter4 (the CPU backend's cavity search tests a tet's neighbours in SIMD lanes)
-// answers as insphere_filter, lane by lane and for every lane count, on random,
-// near-degenerate and degenerate cases and at the filter's limits (NaN, infinity,
-// overflow, underflow), and every sign it gives is the exact one.
-TEST(FilterBounds, InsphereFilter4AnswersAsTheScalarFilter) {
+// insphere_filter4 and orient3d_filter4 (the CPU backend's cavity search and walk test
+// several tets in SIMD lanes) answer as insphere_filter and orient3d_filter, lane by lane
+// and for every lane count, on random, near-degenerate and degenerate cases and at the
+// filters' limits (NaN, infinity, overflow, underflow), and every sign they give is the
+// exact one.
+TEST(FilterBounds, SimdFiltersAnswerAsTheScalarFilters) {
   Generator g(77);
   Oracle o;
   long compared = 0, uncertain = 0, mismatches = 0, signs = 0, wrong = 0;
@@ -300,9 +301,29 @@ TEST(FilterBounds, InsphereFilter4AnswersAsTheScalarFilter) {
           if (out[j] != o.lifted() && ++wrong <= 10) ADD_FAILURE() << "lane " << j << ": not the exact sign " << describe(c, 5);
         }
       }
+      // orient3d over (t[j][0], t[j][1], t[j][2], e)
+      const double* tri[4][3];
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 3; ++i) tri[j][i] = pts[j][i];
+      int o3[4] = {7, 7, 7, 7};
+      orient3d_filter4(tri, e, n, o3);
+      for (int j = 0; j < n; ++j) {
+        const int want = orient3d_filter(tri[j][0], tri[j][1], tri[j][2], e);
+        ++compared;
+        uncertain += want == kUncertain;
+        if (o3[j] != want && ++mismatches <= 10)
+          ADD_FAILURE() << "orient3d lane " << j << " of " << n << ": " << o3[j] << " vs " << want << " " << describe(k[j], 3);
+        if (n == 4 && t % 97 != 0 && o3[j] != kUncertain) {
+          Case c = k[j];
+          for (int d = 0; d < 3; ++d) c.p[3][d] = e[d];
+          o.load(c, 4, false);
+          ++signs;
+          if (o3[j] != o.orient3d() && ++wrong <= 10) ADD_FAILURE() << "orient3d lane " << j << ": not the exact sign " << describe(c, 4);
+        }
+      }
     }
   }
-  std::printf("[insphere_filter4] %ld lanes compared, %ld uncertain; %ld signs checked against GMP\n", compared,
+  std::printf("[simd filters] %ld lanes compared, %ld uncertain; %ld signs checked against GMP\n", compared,
               uncertain, signs);
   EXPECT_EQ(mismatches, 0);
   EXPECT_EQ(wrong, 0);
