@@ -231,7 +231,7 @@ ncu_kernels() {
     step "${tag}_ncu_$b" 170 "$ncu" --clock-control none --kernel-name-base mangled -k "regex:$regex" --csv \
       --metrics "gpu__time_duration.sum${NCU_METRICS:+,$NCU_METRICS}" "$bin/$b" "$@"
     python3 - "$b" "/tmp/gpu-run-${tag}_ncu_$b.log" <<'PY' | tee -a "$out/summary.txt"
-import collections, csv, re, subprocess, sys
+import collections, csv, os, re, subprocess, sys
 lines = [l for l in open(sys.argv[2], errors="replace") if l.startswith('"')]
 tot, cnt = collections.defaultdict(collections.Counter), collections.Counter()
 ms = {"ns": 1e-6, "nsecond": 1e-6, "us": 1e-3, "usecond": 1e-3, "ms": 1, "msecond": 1, "s": 1e3, "second": 1e3}
@@ -245,9 +245,9 @@ names = list(tot)
 dem = subprocess.run(["c++filt"], input="\n".join(names), capture_output=True, text=True).stdout.split("\n")
 T = lambda n: tot[n]["gpu__time_duration.sum"]
 print(f"== {sys.argv[1]}: {sum(cnt.values())} launches, {sum(T(n) for n in names):.2f} ms in all")
-for n, d in sorted(zip(names, dem), key=lambda x: -T(x[0]))[:12]:
+for n, d in sorted(zip(names, dem), key=lambda x: -T(x[0]))[:int(os.environ.get("NCU_TOP", "12"))]:
     kind = "free " if "scratch_kernel<true" in d else "scratch " if "scratch_kernel<false" in d else ""
-    m = re.findall(r"(Splayer|GDel3D)<[^>]*>::(\w+)", d)
+    m = re.findall(r"(Splayer|GDel3D|GFlip3D|TetMesh)<[^>]*>::(\w+)", d)
     lam = re.findall(r"lambda\(([^)]*)\)#(\d+)", d)
     where = "::".join(m[-1]) if m else d[:60]
     extra = ""
@@ -1508,6 +1508,36 @@ PY
       bench "s50a_u$r" 150 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal-par,cgal --repeat 3
     done
     bench s50a_gs 200 --dist grid,sphere,thin_shell --n 1000000 --methods gdel3d-cpu,cgal-par --repeat 3
+    ;;
+  s52a)  # session 52: HEAD's GPU figures (GPU code unchanged since session 49): medians at 10^6 and 10^7, step
+          # profiles of uniform 10^7 and sphere 10^6, the CPU backend on the host's 16 threads against CGAL
+          # (s50a's uniform row), then every kernel of a uniform 10^7 run by ncu (time, L2 sectors)
+    bench s52a_m6 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s52a_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s52a_prof7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s52a_profs 40 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s52a_cpu 150 --dist uniform --n 1000000 --methods gdel3d-cpu,cgal-par,cgal --repeat 3
+    NCU_TOP=40 NCU_METRICS=lts__t_sectors.sum ncu_kernels s52a_e7 . gdel-bench --dist uniform --n 10000000 \
+      --methods gdel3d-cuda-dev --repeat 1 --no-verify
+    ;;
+  s52b)  # session 52: the next active set listed and sorted (default: in a small iteration's team and in large
+          # iterations whose set is below 1/32 of the slots) against the pass over every slot
+          # (GDEL_ACTIVE_SLOTS=1) and the team alone (GDEL_ACTIVE_LISTED_LARGE=0), one binary: gpu_gflip3d,
+          # gpu_gdel3d, then alternating medians at 10^6 (uniform, grid, sphere) and 10^7, step profiles
+    step gflip3d 200 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    for r in 1 2; do
+      GDEL_ACTIVE_SLOTS=1 bench "s52b_slots$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_ACTIVE_LISTED_LARGE=0 bench "s52b_team$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s52b_both$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    GDEL_ACTIVE_SLOTS=1 bench s52b_slots7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_ACTIVE_LISTED_LARGE=0 bench s52b_team7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench s52b_both7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 GDEL_ACTIVE_SLOTS=1 bench s52b_profslots 40 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s52b_profboth 40 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_ACTIVE_SLOTS=1 bench s52b_profslots7 40 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s52b_profboth7 40 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <chrono>
 #include <climits>
@@ -1284,8 +1285,34 @@ class GFlip3D {
       for (int a = 0; a < 3; ++a)
         if (rec[f].out[a] >= 0) m.state[rec[f].out[a]] |= mesh::kQueued;
     };
+    // The same tets, in the same (slot) order, without a pass over every slot where the
+    // set's bound is small against the slots: the candidates' tets listed, then sorted.
+    // Candidate c < np is proposer c (kept where queue_rejected would mark it), c >= np
+    // new tet (c - np) % 3 of flip (c - np) / 3 (-1: none). In a team (small iterations)
+    // by default; on the GPU also in a large iteration where the bound is below
+    // 1/kListedActiveRatio of the slots (on the CPU a sort costs more than the pass; and
+    // GDEL_ACTIVE_LISTED_LARGE=0: never; GDEL_ACTIVE_SLOTS=1: the pass in either;
+    // bench/RESULTS.md, session 52).
+    auto candidate = [=] GDEL_LAMBDA(std::int64_t c) -> tid_t {
+      if (c < np) {
+        if (ap[c]) return -1;
+        const tid_t t = A[plp[c]];
+        return (mark[t] & ~std::uint64_t(0xffffffff)) != stamp ? t : tid_t(-1);
+      }
+      return rec[(c - np) / 3].out[(c - np) % 3];
+    };
+    const std::int64_t abound = np + 3 * nfl;  // the next active set's bound
+    const bool list_large = B::is_device && na > team_max_ && !active_by_slots_ && active_listed_large_ &&
+                            abound * kListedActiveRatio < mesh_.size();
+    Buffer<tid_t, B> act(ctx_);
     if (na <= team_max_) {
-      // the steps below in one team, as the proposals and votes were
+      // the steps below in one team, as the proposals and votes were, and by default the
+      // next active set's list and sort
+      const bool in_team = !active_by_slots_;
+      Buffer<tid_t, B> listed(ctx_, in_team ? static_cast<std::size_t>(abound) : 0);
+      tid_t* lp = listed.data();
+      if (in_team) act.resize(static_cast<std::size_t>(abound));
+      tid_t* acp = act.data();
       double* work = team_work(g);
       std::int64_t* tally = cn + 3;
       par::team_run(ctx_, [=] GDEL_LAMBDA(const par::Team& tm) {
@@ -1300,8 +1327,17 @@ class GFlip3D {
         tm.sync();
         for (std::int64_t e = tm.rank(); e < 6 * nfl; e += tm.size()) link(e);
         for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) free_third(f);
-        for (std::int64_t j = tm.rank(); j < np; j += tm.size()) queue_rejected(j);
-        for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) queue_new(f);
+        if (!in_team) {
+          for (std::int64_t j = tm.rank(); j < np; j += tm.size()) queue_rejected(j);
+          for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) queue_new(f);
+          return;
+        }
+        // (the candidates read the flips' stamps and records, written before the sync above)
+        const std::int64_t k = par::team_select(tm, abound, lp, [=](std::int64_t c) { return candidate(c) >= 0; });
+        for (std::int64_t j = tm.rank(); j < k; j += tm.size()) lp[j] = candidate(lp[j]);
+        tm.sync();
+        par::team_sort_distinct(tm, lp, k, acp);
+        if (tm.rank() == 0) cn[4] = k;
       });
       par::mark(ctx_, "flip: records + tets + adjacency (team)");
     } else {
@@ -1316,23 +1352,34 @@ class GFlip3D {
       ext_code.release();  // not needed past here: room for the next active set's sort
       ext_tet.release();
       par::parallel_for(ctx_, nfl, free_third);
-      par::parallel_for(ctx_, np, queue_rejected);
-      par::parallel_for(ctx_, nfl, queue_new);
+      if (!list_large) {
+        par::parallel_for(ctx_, np, queue_rejected);
+        par::parallel_for(ctx_, nfl, queue_new);
+      }
     }
     mesh_.pushed_free(nfl - n23);
     off23.release();
-    const std::size_t slots = static_cast<std::size_t>(mesh_.size());
     // With `defer` its length stays on the backend (counts_[4]): the next iteration runs
     // over the bound, np + 3 nfl, without a wait here (bench/RESULTS.md, session 20).
-    const std::int64_t abound = np + 3 * nfl;
-    Buffer<tid_t, B> act(ctx_, static_cast<std::size_t>(abound));
-    tid_t* acp = act.data();
-    par::select_indices_to(ctx_, slots, acp, cn + 4, [=] GDEL_LAMBDA(tid_t t) {
-      return (m.state[t] & mesh::kQueued) != 0;
-    });
-    par::parallel_for_counted(ctx_, abound, cn + 4, [=] GDEL_LAMBDA(std::int64_t j) {
-      m.state[acp[j]] &= static_cast<std::uint8_t>(~mesh::kQueued);
-    });
+    if (list_large) {  // unused entries (past the count) sort last, as the slot count
+      act.resize(static_cast<std::size_t>(abound));
+      tid_t* acp = act.data();
+      const std::int64_t* cnt = cn + 4;
+      const tid_t past = static_cast<tid_t>(mesh_.size());
+      par::select_indices_to(ctx_, static_cast<std::size_t>(abound), acp, cn + 4,
+                             [=] GDEL_LAMBDA(tid_t c) { return candidate(c) >= 0; });
+      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = j < *cnt ? candidate(acp[j]) : past; });
+      par::sort_keys(ctx_, acp, static_cast<std::size_t>(abound),
+                     std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(past)))));
+    } else if (act.size() == 0) {  // the marked slots, in slot order
+      act.resize(static_cast<std::size_t>(abound));
+      tid_t* acp = act.data();
+      par::select_indices_to(ctx_, static_cast<std::size_t>(mesh_.size()), acp, cn + 4,
+                             [=] GDEL_LAMBDA(tid_t t) { return (m.state[t] & mesh::kQueued) != 0; });
+      par::parallel_for_counted(ctx_, abound, cn + 4, [=] GDEL_LAMBDA(std::int64_t j) {
+        m.state[acp[j]] &= static_cast<std::uint8_t>(~mesh::kQueued);
+      });
+    }
     if (defer) {
       active_deferred_ = true;
     } else {
@@ -1679,6 +1726,12 @@ class GFlip3D {
   ProposeAt propose_at_ = propose_at_setting();
   int spread_block_ = spread_block_setting();
   bool split_exact_ = split_exact_setting();
+  bool active_by_slots_ = par::knob_on("GDEL_ACTIVE_SLOTS");
+  bool active_listed_large_ = !par::knob_off("GDEL_ACTIVE_LISTED_LARGE");
+  // commit_flips lists and sorts a large iteration's next active set (no pass over the
+  // slots) when its bound is below this fraction of the slots: the sort moves ≈ 32 bytes
+  // a key where the pass reads one byte a slot.
+  static constexpr std::int64_t kListedActiveRatio = 32;
   Buffer<std::uint64_t, B> aux_key_;  // per tet slot; see grow_aux for the three
   Buffer<std::int32_t, B> aux_pick_;
   bool marks_dirty_ = false;  // aux_key_ holds flip stamps

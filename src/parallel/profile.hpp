@@ -35,6 +35,11 @@ inline bool knob_off(const char* name) {
   const char* e = std::getenv(name);
   return e && std::string(e) == "0";
 }
+// A measurement knob that turns a default-off path on: the variable `name` set to "1".
+inline bool knob_on(const char* name) {
+  const char* e = std::getenv(name);
+  return e && std::string(e) == "1";
+}
 
 // Totals per name: mark k (name names[k]) closes the interval (t[k], t[k+1]], whose
 // memory peak is peaks[k]; t holds one more entry than names (t[0]: the origin).

@@ -15,6 +15,7 @@
 // order = index order), as in team_select below.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "core/macros.hpp"
@@ -85,6 +86,27 @@ GDEL_HD std::int64_t team_select(const Team& tm, std::int64_t n, std::int32_t* o
   }
   tm.sync();  // (the last chunk's writes came after the last sum's barrier)
   return base;
+}
+
+// Distinct keys in[0, k) to out[0, k) in ascending order (in and out apart). Collective;
+// out is visible to every thread on return. On the device each key is written at its
+// rank, counted against all k keys: k^2 / size() comparisons per thread, all threads
+// reading the same key at once (for the lists one team handles: a few thousand keys).
+template <class T>
+GDEL_HD void team_sort_distinct(const Team& tm, const T* in, std::int64_t k, T* out) {
+#if GDEL_DEVICE_PASS
+  for (std::int64_t j = tm.rank(); j < k; j += tm.size()) {
+    const T x = in[j];
+    std::int64_t r = 0;
+    for (std::int64_t i = 0; i < k; ++i) r += in[i] < x ? 1 : 0;
+    out[r] = x;
+  }
+  tm.sync();
+#else
+  (void)tm;
+  std::copy(in, in + k, out);
+  std::sort(out, out + k);
+#endif
 }
 
 // Runs body(team) once per thread of one team. Does not wait for the host.

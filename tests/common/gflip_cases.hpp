@@ -229,7 +229,10 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
 // proposers, flips and next active set in index order, so each gives the default's
 // triangulation, flip for flip: no teams, teams proposing, spread proposals, and teams
 // on every active set with spread proposals (which then cover large sets, and float
-// input's exact scratch). On integer input (the grid, the sphere) a large iteration's
+// input's exact scratch). The next active set is listed from its candidates and sorted
+// (in a team: par::team_sort_distinct; in a large iteration whose set is small against
+// the slots: a radix sort), or taken from the marked slots by a pass over every slot
+// (GDEL_ACTIVE_SLOTS=1 and the large sets): the same list, or the paths' flips part. On integer input (the grid, the sphere) a large iteration's
 // exact proposals run a face per thread (split) or, GDEL_SPLIT_EXACT=0, a tet per thread:
 // no teams with each. Sphere points: every insphere test an exact tie.
 inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
@@ -237,25 +240,30 @@ inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
     const char* team_max;
     const char* propose;
     const char* split;
+    const char* slots = "0";  // GDEL_ACTIVE_SLOTS
   };
   const Path paths[] = {{"0", "auto", "1"},
                         {"0", "auto", "0"},
                         {"1024", "team", "1"},
                         {"1024", "spread", "1"},
-                        {"100000000", "spread", "1"}};
+                        {"100000000", "spread", "1"},
+                        {"1024", "auto", "1", "1"},
+                        {"0", "auto", "1", "1"}};
   auto check = [&](const std::vector<double>& pts, const Options& o) {
     const Triangulation base = delaunay(pts, o);
     expect_flip_output_valid(pts, base, b);
     for (const Path& p : paths) {
       SCOPED_TRACE(std::string("GDEL_TEAM_MAX=") + p.team_max + " GDEL_TEAM_PROPOSE=" + p.propose +
-                   " GDEL_SPLIT_EXACT=" + p.split);
+                   " GDEL_SPLIT_EXACT=" + p.split + " GDEL_ACTIVE_SLOTS=" + p.slots);
       ::setenv("GDEL_TEAM_MAX", p.team_max, 1);
       ::setenv("GDEL_TEAM_PROPOSE", p.propose, 1);
       ::setenv("GDEL_SPLIT_EXACT", p.split, 1);
+      ::setenv("GDEL_ACTIVE_SLOTS", p.slots, 1);
       const Triangulation t = delaunay(pts, o);
       ::unsetenv("GDEL_TEAM_MAX");
       ::unsetenv("GDEL_TEAM_PROPOSE");
       ::unsetenv("GDEL_SPLIT_EXACT");
+      ::unsetenv("GDEL_ACTIVE_SLOTS");
       EXPECT_EQ(t.stats.flip_iterations, base.stats.flip_iterations);
       EXPECT_EQ(t.stats.flips23, base.stats.flips23);
       EXPECT_EQ(t.stats.flips32, base.stats.flips32);
