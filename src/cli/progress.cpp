@@ -38,7 +38,9 @@ void Progress::phase(const std::string& text) {
   std::lock_guard<std::mutex> lock(mutex_);
   phase_ = text;
   phase_start_ = Clock::now();
-  if (shown_) draw_locked();
+  // past the delay a new phase is drawn as it starts, not at the next tick (a phase
+  // shorter than the period would otherwise never show)
+  if (enabled_ && !stopping_ && (shown_ || phase_start_ - start_ >= delay_)) draw_locked();
 }
 
 void Progress::print(const std::function<void()>& print) {

@@ -3,9 +3,10 @@
 // The library's API has no progress callback today (gdel::delaunay runs to completion and
 // returns its Stats), so the display shows the phases the command itself knows -- reading,
 // triangulating, verifying, writing -- with the time spent in the current phase and in
-// total, redrawn in place by a helper thread a few times a second. Nothing is shown during
-// the first `delay` seconds, so short runs print nothing extra; the line is erased when the
-// run ends or before the command prints anything else (print()).
+// total, redrawn in place by a helper thread a few times a second and as each phase
+// starts. Nothing is shown during the first `delay` seconds, so short runs print nothing
+// extra; the line is erased when the run ends or before the command prints anything else
+// (print()).
 #pragma once
 
 #include <chrono>

@@ -433,7 +433,7 @@ std::pair<std::string, int> run_on_pty(const std::string& exe, const fs::path& c
 
 TEST_F(CliTest, ProgressLineOnATerminalIsDrawnAndErased) {
   write_points("p.xyz", 50000, 6);
-  // Delay 0: the line appears at the first tick (0.2 s), well within this run.
+  // Delay 0: each phase is drawn as it starts (and then every 0.2 s), however short.
   auto [tty, rc] = run_on_pty(exe_, dir_ / "work",
                               {"delaunay", "p.xyz", "-o", "m.vtu", "--device", "cpu", "--check", "--progress-delay", "0"});
   if (rc == -2) GTEST_SKIP() << "no pseudo-terminal available";
