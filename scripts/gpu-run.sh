@@ -1520,7 +1520,7 @@ PY
     NCU_TOP=40 NCU_METRICS=lts__t_sectors.sum ncu_kernels s52a_e7 . gdel-bench --dist uniform --n 10000000 \
       --methods gdel3d-cuda-dev --repeat 1 --no-verify
     ;;
-  s52b)  # session 52: the next active set listed and sorted (default: in a small iteration's team and in large
+  s52b|s52c)  # session 52: the next active set listed and sorted (default: in a small iteration's team and in large
           # iterations whose set is below 1/32 of the slots) against the pass over every slot
           # (GDEL_ACTIVE_SLOTS=1) and the team alone (GDEL_ACTIVE_LISTED_LARGE=0), one binary: gpu_gflip3d,
           # gpu_gdel3d, then alternating medians at 10^6 (uniform, grid, sphere) and 10^7, step profiles
@@ -1538,6 +1538,21 @@ PY
     GDEL_PROFILE=1 bench s52b_profboth 40 --dist sphere,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_ACTIVE_SLOTS=1 bench s52b_profslots7 40 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s52b_profboth7 40 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    # s52c: then the tet sorts only after rounds that inserted at least 1/R of the points so far
+    # (GDEL_REORDER_SHARE=R; 0: after every round, as before): uniform 10^7 and 10^6, grid, sphere
+    if [ "$plan" = s52c ]; then
+      for r in 1 2; do
+        for v in 0 8 4; do
+          GDEL_REORDER_SHARE=$v bench "s52c_share${v}_e7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+        done
+      done
+      for v in 0 8 4; do
+        GDEL_REORDER_SHARE=$v bench "s52c_share${v}_m6" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev \
+          --repeat 5
+      done
+      GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 GDEL_REORDER_SHARE=8 bench s52c_prof8 40 --dist uniform --n 10000000 \
+        --methods gdel3d-cuda-dev --repeat 1
+    fi
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

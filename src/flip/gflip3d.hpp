@@ -69,6 +69,12 @@ struct FlipConfig {
   // GDEL_TET_REORDER=0/1 and GDEL_REORDER_EVERY (read by run()).
   bool reorder_tets = false;
   int reorder_every = 1;
+  // ... and then only when the points inserted since the last sort are at least
+  // 1/reorder_share of those inserted so far (0: every reorder_every-th round): the last
+  // rounds insert a few per cent of the points, which moves few tets out of order, while
+  // each sort moves the whole mesh (bench/RESULTS.md, session 52). Study knob
+  // GDEL_REORDER_SHARE.
+  int reorder_share = 0;
   // Non-optimal flipping once flipping is stuck at the end (Options::nonoptimal_flips):
   // at most nonoptimal_rounds rounds, each of at most nonoptimal_steps parallel steps of
   // non-improving flips followed by a normal flip loop. With independent_splits also one
@@ -138,6 +144,7 @@ class GFlip3D {
     if (const char* e = std::getenv("GDEL_FLIP_LOG_RECORDS")) cfg_.log_records = std::max<long long>(1, std::atoll(e));
     if (const char* e = std::getenv("GDEL_TET_REORDER")) cfg_.reorder_tets = std::atoi(e) != 0;
     if (const char* e = std::getenv("GDEL_REORDER_EVERY")) cfg_.reorder_every = std::max(0, std::atoi(e));
+    if (const char* e = std::getenv("GDEL_REORDER_SHARE")) cfg_.reorder_share = std::max(0, std::atoi(e));
     if (const char* e = std::getenv("GDEL_FLIPS_PER_ITERATION"))
       cfg_.max_flips_per_iteration = std::max<long long>(1, std::atoll(e));
     trace_ = std::getenv("GDEL_FLIP_TRACE") != nullptr;
@@ -157,6 +164,7 @@ class GFlip3D {
     bool flipping = !cfg_.terminal;
     bool flipped_all_along = flipping;
     std::int64_t remaining = static_cast<std::int64_t>(todo_.size());
+    std::int64_t unsorted = 0;  // points inserted since the last tet sort
     while (remaining > 0) {
       auto tr = std::chrono::steady_clock::now();
       std::int64_t inserted = insert_round(flipping && cfg_.independent_splits);
@@ -187,9 +195,14 @@ class GFlip3D {
           log_.release();  // the insertion round does not need its storage
           t_relocate_ += since(tl);
         }
-        if (remaining > 0 && cfg_.reorder_tets && cfg_.reorder_every > 0 && st_.rounds % cfg_.reorder_every == 0) {
+        unsorted += inserted;
+        if (remaining > 0 && cfg_.reorder_tets && cfg_.reorder_every > 0 && st_.rounds % cfg_.reorder_every == 0 &&
+            (cfg_.reorder_share == 0 || unsorted * cfg_.reorder_share >= n_ - remaining)) {
           auto to = std::chrono::steady_clock::now();
-          if (reorder_tets(/*shrink=*/false)) t_reorder_ += since(to);  // (a stage only when one ran)
+          if (reorder_tets(/*shrink=*/false)) {
+            t_reorder_ += since(to);  // (a stage only when one ran)
+            unsorted = 0;
+          }
         }
         // Tail rule (ALGORITHMS.md §3.1): the last tiny rounds are not worth a flip
         // loop each; insert them by splitting and flip once at the end.
