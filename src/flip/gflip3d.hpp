@@ -621,8 +621,9 @@ class GFlip3D {
   // weights put K near a vertex or an edge, where the spacing of doubles (finer near 0)
   // can resolve the thickness. Each candidate's coordinates are summed in order of
   // increasing weight (tiny contributions are not lost against larger ones where those
-  // are 0) and checked with exact orient3d. A tet whose interior holds no double at all (four points one ulp
-  // apart around (1,1,1)) still raises the error: documented in docs/gflip3d.md.
+  // are 0) and checked with exact orient3d. A tet whose interior holds no double at all
+  // (four points one ulp apart around (1,1,1)) still raises the error: documented in
+  // docs/gflip3d.md.
   void set_kernel_point(const vid_t t[4]) {
     std::vector<std::vector<double>> p;
     for (int k = 0; k < 4; ++k) p.push_back(host_point(t[k]));
@@ -1285,27 +1286,16 @@ class GFlip3D {
       ftop[f - o23[f]] = t;
     };
     // next active set: the rejected proposers (the stuck tets among them) that no flip
-    // took, and the flips' new tets, in slot order. Each is marked (kQueued) by exactly
-    // one thread: a proposer whose tet a flip took (stamped by ExecuteFlip) is left to
-    // that flip, or was freed. The marked slots are then gathered in order by one pass
-    // over the slots (no sort, no unique: one wait instead of two) and unmarked.
-    auto queue_rejected = [=] GDEL_LAMBDA(std::int64_t j) {
-      if (ap[j]) return;
-      const tid_t t = A[plp[j]];
-      if ((mark[t] & ~std::uint64_t(0xffffffff)) != stamp) m.state[t] |= mesh::kQueued;
-    };
-    auto queue_new = [=] GDEL_LAMBDA(std::int64_t f) {
-      for (int a = 0; a < 3; ++a)
-        if (rec[f].out[a] >= 0) m.state[rec[f].out[a]] |= mesh::kQueued;
-    };
-    // The same tets, in the same (slot) order, without a pass over every slot where the
-    // set's bound is small against the slots: the candidates' tets listed, then sorted.
-    // Candidate c < np is proposer c (kept where queue_rejected would mark it), c >= np
-    // new tet (c - np) % 3 of flip (c - np) / 3 (-1: none). In a team (small iterations)
-    // by default; on the GPU also in a large iteration where the bound is below
-    // 1/kListedActiveRatio of the slots (on the CPU a sort costs more than the pass; and
-    // GDEL_ACTIVE_LISTED_LARGE=0: never; GDEL_ACTIVE_SLOTS=1: the pass in either;
-    // bench/RESULTS.md, session 52).
+    // took, and the flips' new tets, in slot order. Candidate c < np is proposer c, kept
+    // unless a flip took its tet (stamped by ExecuteFlip: left to that flip, or freed);
+    // c >= np is new tet (c - np) % 3 of flip (c - np) / 3 (-1: none). Each tet is the
+    // candidate of exactly one c. By default the candidates' tets are listed, then
+    // sorted: in a team (small iterations), and on the GPU in a large iteration where the
+    // bound is below 1/kListedActiveRatio of the slots (on the CPU a sort costs more than
+    // the pass). Otherwise each is marked (kQueued) and the marked slots are gathered in
+    // order by one pass over the slots, then unmarked (GDEL_ACTIVE_LISTED_LARGE=0: never
+    // listed in large iterations; GDEL_ACTIVE_SLOTS=1: the pass in either; the same tets
+    // in the same order; bench/RESULTS.md, session 52).
     auto candidate = [=] GDEL_LAMBDA(std::int64_t c) -> tid_t {
       if (c < np) {
         if (ap[c]) return -1;
@@ -1314,17 +1304,20 @@ class GFlip3D {
       }
       return rec[(c - np) / 3].out[(c - np) % 3];
     };
+    auto queue = [=] GDEL_LAMBDA(std::int64_t c) {
+      const tid_t t = candidate(c);
+      if (t >= 0) m.state[t] |= mesh::kQueued;
+    };
     const std::int64_t abound = np + 3 * nfl;  // the next active set's bound
-    const bool list_large = B::is_device && na > team_max_ && !active_by_slots_ && active_listed_large_ &&
+    const bool team = na <= team_max_;  // the steps below in one team, as the proposals and votes were
+    const bool list_in_team = team && !active_by_slots_;
+    const bool list_large = B::is_device && !team && !active_by_slots_ && active_listed_large_ &&
                             abound * kListedActiveRatio < mesh_.size();
     Buffer<tid_t, B> act(ctx_);
-    if (na <= team_max_) {
-      // the steps below in one team, as the proposals and votes were, and by default the
-      // next active set's list and sort
-      const bool in_team = !active_by_slots_;
-      Buffer<tid_t, B> listed(ctx_, in_team ? static_cast<std::size_t>(abound) : 0);
+    if (team) {
+      Buffer<tid_t, B> listed(ctx_, list_in_team ? static_cast<std::size_t>(abound) : 0);
       tid_t* lp = listed.data();
-      if (in_team) act.resize(static_cast<std::size_t>(abound));
+      if (list_in_team) act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
       double* work = team_work(g);
       std::int64_t* tally = cn + 3;
@@ -1340,9 +1333,8 @@ class GFlip3D {
         tm.sync();
         for (std::int64_t e = tm.rank(); e < 6 * nfl; e += tm.size()) link(e);
         for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) free_third(f);
-        if (!in_team) {
-          for (std::int64_t j = tm.rank(); j < np; j += tm.size()) queue_rejected(j);
-          for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) queue_new(f);
+        if (!list_in_team) {
+          for (std::int64_t c = tm.rank(); c < abound; c += tm.size()) queue(c);
           return;
         }
         // (the candidates read the flips' stamps and records, written before the sync above)
@@ -1365,10 +1357,7 @@ class GFlip3D {
       ext_code.release();  // not needed past here: room for the next active set's sort
       ext_tet.release();
       par::parallel_for(ctx_, nfl, free_third);
-      if (!list_large) {
-        par::parallel_for(ctx_, np, queue_rejected);
-        par::parallel_for(ctx_, nfl, queue_new);
-      }
+      if (!list_large) par::parallel_for(ctx_, abound, queue);
     }
     mesh_.pushed_free(nfl - n23);
     off23.release();
@@ -1384,7 +1373,7 @@ class GFlip3D {
       par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = j < *cnt ? candidate(acp[j]) : past; });
       par::sort_keys(ctx_, acp, static_cast<std::size_t>(abound),
                      std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(past)))));
-    } else if (act.size() == 0) {  // the marked slots, in slot order
+    } else if (!list_in_team) {  // the marked slots, in slot order
       act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
       par::select_indices_to(ctx_, static_cast<std::size_t>(mesh_.size()), acp, cn + 4,

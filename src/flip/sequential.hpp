@@ -378,17 +378,19 @@ class SequentialInsertion {
     Worker(SequentialInsertion& s, std::uint8_t id) : s_(&s), g_(s.g_), id_(id), work_(geom::kPredicateWork) {}
 
     // --- predicates: filter first, exact (SoS) when it cannot decide --------------------
-    int orient(vid_t a, vid_t b, vid_t c, vid_t d) {
-      const int r = g_.orient_fast(a, b, c, d);
+    // r: a filter's answer; undecided: exact() instead, counted
+    template <class Exact>
+    GDEL_FORCEINLINE int settle(int r, Exact&& exact) {
       if (r != par::kUndecided) return r;
       ++c_.exact;
-      return g_.orient_exact(a, b, c, d, work_.data());
+      return exact();
+    }
+    int orient(vid_t a, vid_t b, vid_t c, vid_t d) {
+      return settle(g_.orient_fast(a, b, c, d), [&] { return g_.orient_exact(a, b, c, d, work_.data()); });
     }
     int insphere(const vid_t* t, vid_t e) {
-      const int r = g_.template insphere<false>(t, e, nullptr);
-      if (r != par::kUndecided) return r;
-      ++c_.exact;
-      return g_.template insphere<true>(t, e, work_.data());
+      return settle(g_.template insphere<false>(t, e, nullptr),
+                    [&] { return g_.template insphere<true>(t, e, work_.data()); });
     }
     // in[j] = insphere(q[j]->v, p) > 0 for j < n (n <= 4): the finite tets' filters
     // together (geom::insphere_filter4, one per SIMD lane) when there are several, the
@@ -408,14 +410,9 @@ class SequentialInsertion {
       if (nf <= 1) return;
       int s[4];
       geom::insphere_filter4(pts, g_.p(p), nf, s);
-      for (int f = 0; f < nf; ++f) {
-        int r = Geo::filter_answer(s[f]);
-        if (r == par::kUndecided) {
-          ++c_.exact;
-          r = g_.template insphere<true>(q[lane[f]]->v, p, work_.data());
-        }
-        in[lane[f]] = r > 0;
-      }
+      for (int f = 0; f < nf; ++f)
+        in[lane[f]] = settle(Geo::filter_answer(s[f]),
+                             [&] { return g_.template insphere<true>(q[lane[f]]->v, p, work_.data()); }) > 0;
     }
     int face_flip_any(const vid_t* bv, const vid_t* apex, int i) {
       const int f = face_flip<false>(g_, bv, apex, i, nullptr);
@@ -551,13 +548,8 @@ class SequentialInsertion {
           const vid_t a = c.v[face_vertex(face[j], 0)], b = c.v[face_vertex(face[j], 1)];
           const vid_t d = c.v[face_vertex(face[j], 2)];
           int r = Geo::filter_answer(s[j]);
-          if (r != par::kUndecided) {
-            if (a == g_.inf || b == g_.inf || d == g_.inf) r = -r;  // as Geo::orient_fast
-          } else {
-            ++c_.exact;
-            r = g_.orient_exact(a, b, d, q, work_.data());
-          }
-          if (r < 0) exit = face[j];
+          if (r != par::kUndecided && (a == g_.inf || b == g_.inf || d == g_.inf)) r = -r;  // as Geo::orient_fast
+          if (settle(r, [&] { return g_.orient_exact(a, b, d, q, work_.data()); }) < 0) exit = face[j];
         }
         if (exit < 0) return t;
         from = face_of(c.n[exit]);

@@ -333,10 +333,10 @@ std::pair<std::uint64_t, std::vector<IPoint>> find_sphere(std::size_t n) {
   // The construction gives at most 2 sigma(d) points (r4(d) = 8 sigma(d) quadruples, four
   // per point at least), and exactly detail::sphere_point_count_formula(d) points (checked
   // against the enumeration by the tests for every odd d below a few thousand; should it
-  // ever overestimate, the enumeration below still decides, so the result stays correct). For odd d < 3*5*7*11*13*17*19*23
-  // (> kSphereMaxRadius), d has at most 7 distinct prime factors, so
-  // sigma(d)/d < prod_{p in 3..19} p/(p-1) < 2.924 and 2 sigma(d) < 5.85 d: no d < n/6 can
-  // succeed. Scan the odd d >= n/6 in windows, sieving sigma(d) to skip hopeless ones.
+  // ever overestimate, the enumeration below still decides, so the result stays correct).
+  // For odd d < 3*5*7*11*13*17*19*23 (> kSphereMaxRadius), d has at most 7 distinct prime
+  // factors, so sigma(d)/d < prod_{p in 3..19} p/(p-1) < 2.924 and 2 sigma(d) < 5.85 d: no
+  // d < n/6 can succeed. Scan the odd d >= n/6 in windows, sieving sigma(d) to skip hopeless ones.
   std::uint64_t lo = std::max<std::uint64_t>(1, n / 6) | 1;
   constexpr std::uint64_t kWindow = 1u << 15;  // odd numbers per window
   std::vector<std::uint64_t> sigma(kWindow);

@@ -1,8 +1,8 @@
 // insphere_filter4 and orient3d_filter4: detail::lifted_filter<false> and orient3d_filter
-// (filters.hpp) on four tests at once, one per lane of a vector of doubles. Every lane goes through the same IEEE binary64
-// operations, round to nearest, in the same order as the scalar filter (the build's
-// -ffp-contract=off keeps every product and sum apart, as fp.hpp requires), so its
-// answer is the scalar filter's bit for bit: tests/cpu/predicates.cpp
+// (filters.hpp) on four tests at once, one per lane of a vector of doubles. Every lane goes
+// through the same IEEE binary64 operations, round to nearest, in the same order as the
+// scalar filter (the build's -ffp-contract=off keeps every product and sum apart, as fp.hpp
+// requires), so its answer is the scalar filter's bit for bit: tests/cpu/predicates.cpp
 // (FilterBounds.SimdFiltersAnswerAsTheScalarFilters) holds them together.
 //
 // Why a second text of the same arithmetic instead of one template over the number type:

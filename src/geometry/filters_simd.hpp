@@ -1,6 +1,6 @@
 // Host SIMD forms of the insphere and orient3d filters (filters.hpp): several independent
-// tests in the lanes of one vector. Host code only (GCC/Clang vector extensions); the CUDA backend runs
-// a test per thread instead.
+// tests in the lanes of one vector. Host code only (GCC/Clang vector extensions); the CUDA
+// backend runs a test per thread instead.
 #pragma once
 
 namespace gdel::geom {

@@ -55,11 +55,12 @@
 //    below the 2^995 that keeps 134217729 * a finite.
 // Outside the range: the filters stay correct for any finite input with |x| <= 2^200 and
 // |w| <= 2^400 (their underflow thresholds handle tiny inputs, infinities and NaN give
-// kUncertain), but the exact stage may lose bits (and needs finite input). Every sign here is invariant under
-// multiplying all coordinates by 2^k and all weights by 2^(2k), so an API layer can move an
-// input whose spread fits (max/min non-zero magnitude <= 2^352) into the range exactly.
-// Inputs at scales below about 2^-80 (insphere/power) or 2^-270 (orient3d) are in range
-// but always miss the filter (its underflow threshold) and go to the exact stage.
+// kUncertain), but the exact stage may lose bits (and needs finite input). Every sign here
+// is invariant under multiplying all coordinates by 2^k and all weights by 2^(2k), so an
+// API layer can move an input whose spread fits (max/min non-zero magnitude <= 2^352) into
+// the range exactly. Inputs at scales below about 2^-80 (insphere/power) or 2^-270
+// (orient3d) are in range but always miss the filter (its underflow threshold) and go to
+// the exact stage.
 // ---------------------------------------------------------------------------------------
 //
 // Simulation of simplicity (E-M, *_sos). Points are sorted by ascending original index

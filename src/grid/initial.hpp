@@ -16,8 +16,8 @@
 //      exactly; the counts go to Stats (the measured negative results). A sample with
 //      many exact ties (flat dual tets or cospherical dual pairs ≥ kDegenerateShare of
 //      the dual tets: lattice-like or cospherical input) is not used — gStar4D's star
-//      splaying is slow on such input (exact ties in every test) (docs/gstar4d.md) — and the default start is
-//      taken instead.
+//      splaying is slow on such input (exact ties in every test) (docs/gstar4d.md) —
+//      and the default start is taken instead.
 //   3. the sites' exact Delaunay triangulation from the dual by star splaying: gStar4D
 //      (star4d::gstar4d) on the sites with that same grid, so its working sets are the
 //      dual's edges (+ pumping); certified by the exact verifier (valid, locally

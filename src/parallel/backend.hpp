@@ -111,10 +111,10 @@ class Context<Cpu> {
 // The pool keeps what is freed until the context ends (release threshold: no limit): a
 // pool with the default threshold (0) hands its unused memory back to the driver at
 // every host synchronisation, and the next allocations map it again (measured: 3-5 %
-// of uniform 10^7, 16 % of the 10^6 sphere; bench/RESULTS.md, session 14). The memory goes back when
-// the context is destroyed, or when an allocation fails (the pool is trimmed, then the
-// allocation is tried once more). GDEL_DEVICE_POOL=default selects the device's default
-// pool with its default threshold instead (for comparison).
+// of uniform 10^7, 16 % of the 10^6 sphere; bench/RESULTS.md, session 14). The memory goes
+// back when the context is destroyed, or when an allocation fails (the pool is trimmed,
+// then the allocation is tried once more). GDEL_DEVICE_POOL=default selects the device's
+// default pool with its default threshold instead (for comparison).
 template <>
 class Context<Cuda> {
  public:

@@ -8,12 +8,12 @@
 //          work_doubles doubles for expansion arithmetic.
 // fast_then_exact_tiered(..., tiered): exact returns bool (false: not decided). With
 // `tiered`, between the two passes every undecided item is first tried with
-// work = nullptr (no scratch: see exact_threads for how many threads); exact answers false where it needs the scratch
-// (flip::Geo on integer input: its evaluations over finite points run in the integer
-// stage and never touch it), and only those items go on to pass 2's scratch threads.
-// two_stage_signs is the same for a sign per item. fast_then_split: items whose exact
-// evaluation splits into independent pieces decided without a scratch run a piece per
-// thread, then a join per item.
+// work = nullptr (no scratch: see exact_threads for how many threads); exact answers false
+// where it needs the scratch (flip::Geo on integer input: its evaluations over finite
+// points run in the integer stage and never touch it), and only those items go on to pass
+// 2's scratch threads. two_stage_signs is the same for a sign per item. fast_then_split:
+// items whose exact evaluation splits into independent pieces decided without a scratch run
+// a piece per thread, then a join per item.
 // On the GPU pass 2 runs with a bounded number of threads, each owning a slice of a
 // global-memory scratch (exact expansions are far too long for registers), grid-
 // striding over the list; on the CPU each OpenMP thread uses a heap scratch.

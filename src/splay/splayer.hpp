@@ -490,8 +490,8 @@ class Splayer {
   // to the host, 320 MB at 10^7 points, which the uniform generator's few stars above 48
   // did not repay: its repair took 0.31 s instead of 0.08, 3.6 s instead of 1.1 at 10^8
   // (bench/RESULTS.md, session 20); the jobs now fetch only the points they read
-  // (fetch_points, session 46), and the gate is not re-measured. GDEL_HOST_STAR_GATE=N sets it (tests); with
-  // GDEL_HOST_STAR_MIN set and no GDEL_HOST_STAR_GATE, no gate.
+  // (fetch_points, session 46), and the gate is not re-measured. GDEL_HOST_STAR_GATE=N sets
+  // it (tests); with GDEL_HOST_STAR_MIN set and no GDEL_HOST_STAR_GATE, no gate.
   static constexpr I64 kHostGate = 128;
   static I64 host_gate() {
     if (const char* e = std::getenv("GDEL_HOST_STAR_GATE")) return std::max<I64>(0, std::atoll(e));

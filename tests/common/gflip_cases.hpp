@@ -232,9 +232,10 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
 // input's exact scratch). The next active set is listed from its candidates and sorted
 // (in a team: par::team_sort_distinct; in a large iteration whose set is small against
 // the slots: a radix sort), or taken from the marked slots by a pass over every slot
-// (GDEL_ACTIVE_SLOTS=1 and the large sets): the same list, or the paths' flips part. On integer input (the grid, the sphere) a large iteration's
-// exact proposals run a face per thread (split) or, GDEL_SPLIT_EXACT=0, a tet per thread:
-// no teams with each. Sphere points: every insphere test an exact tie.
+// (GDEL_ACTIVE_SLOTS=1 and the large sets): the same list, or the paths' flips part. On
+// integer input (the grid, the sphere) a large iteration's exact proposals run a face per
+// thread (split) or, GDEL_SPLIT_EXACT=0, a tet per thread: no teams with each. Sphere
+// points: every insphere test an exact tie.
 inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
   struct Path {
     const char* team_max;

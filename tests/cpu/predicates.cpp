@@ -381,7 +381,8 @@ TEST(Predicates, GeometricMeaning) {
     }
     // Plane through lifted a..d: h = alpha . p + delta, i.e. solve for (alpha, delta):
     // 2 alpha . (p_i - p_0) = ... use the circumcentre form: centre C, radius^2 R solve
-    // |p_i - C|^2 - w_i = R for i = 0..3 (power sphere): 2 (p_i - p_0).C = |p_i|^2 - |p_0|^2 - w_i + w_0.
+    // |p_i - C|^2 - w_i = R for i = 0..3 (power sphere):
+    // 2 (p_i - p_0).C = |p_i|^2 - |p_0|^2 - w_i + w_0.
     mpq_class A[3][4];
     for (int i = 0; i < 3; ++i) {
       mpq_class rhs = 0;

@@ -381,8 +381,9 @@ class Generator {
         }
         break;
       }
-      case 9: {  // integers at the integer stage's limits (minors.hpp): |x| <= 2^23, |w| <= 2^46, and just past;
-                 // then (one case in three) the same divided by 4 (weights by 16): its quarter scale
+      case 9: {  // integers at the integer stage's limits (minors.hpp): |x| <= 2^23,
+                 // |w| <= 2^46, and just past; then (one case in three) the same divided
+                 // by 4 (weights by 16): its quarter scale
         const double X = 0x1p23, W = 0x1p46;
         const bool quarter = integer(0, 2) == 0;
         switch (integer(0, 2)) {
