@@ -1554,6 +1554,29 @@ PY
         --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
+  s53a)  # session 53: insertion in SoS order once exact ties dominate (GDEL_SOS_ORDER_SWITCH=0: never) and the
+          # final flip loop from the tail's tets (GDEL_FINAL_ALL_TETS=1: every tet, as before), one binary:
+          # gpu_gflip3d, gpu_gdel3d, alternating medians at 10^6 (uniform, grid, sphere) and 10^7, profiles;
+          # then session 52's pending A/B (next active set, reorder share) as far as the budget goes
+    step gflip3d 200 "$tbin/gpu_gflip3d"
+    step gdel3d 200 "$tbin/gpu_gdel3d"
+    for r in 1 2; do
+      bench "s53a_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_SOS_ORDER_SWITCH=0 GDEL_FINAL_ALL_TETS=1 bench "s53a_old$r" 60 --dist uniform,grid,sphere --n 1000000 \
+        --methods gdel3d-cuda-dev --repeat 5
+    done
+    GDEL_SOS_ORDER_SWITCH=0 bench s53a_noswitch 60 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_FINAL_ALL_TETS=1 bench s53a_alltets 60 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s53a_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_FINAL_ALL_TETS=1 bench s53a_old7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s53a_profs 40 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s53a_prof7 40 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_ACTIVE_SLOTS=1 bench s53a_slots 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_ACTIVE_SLOTS=1 bench s53a_slots7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    for v in 8 4; do
+      GDEL_REORDER_SHARE=$v bench "s53a_share${v}_e7" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -27,9 +27,13 @@ const char* to_string(Algorithm a);
 
 // Which uninserted point a tet inserts in a round of gFlip3D.
 enum class InsertionRule {
-  Circumcenter,  // nearest to the circumcentre (largest insphere determinant), default
-  Centroid,      // nearest to the centroid
-  Random,        // a hash of the point index
+  // nearest to the circumcentre (largest insphere determinant), default; switches to
+  // SosOrder once exact insphere ties dominate the flipping (cospherical input: docs/
+  // gflip3d.md, "Insertion in SoS order"; Stats::sos_order_round says when)
+  Circumcenter,
+  Centroid,  // nearest to the centroid
+  Random,    // a hash of the point index
+  SosOrder,  // the smallest SoS index, i.e. input index (for study; see Circumcenter)
 };
 
 // What gFlip3D (and so gDel3D) starts inserting from (docs/grid.md).
@@ -129,6 +133,9 @@ struct Stats {
   std::int64_t flips23 = 0, flips32 = 0;  // (0 for gdel3d's cavity insertion on the CPU)
   std::int64_t exact_evaluations = 0;  // items decided by the exact (non-filter) pass
   std::int64_t failed_vertices = 0;    // vertices of facets left not locally Delaunay (in the output)
+  // InsertionRule::Circumcenter: the round after which the rounds inserted in SoS order
+  // (exact insphere ties dominated the flipping so far); 0: never
+  std::int64_t sos_order_round = 0;
   // Options::nonoptimal_flips: rounds run (those after insertion rounds included), of
   // them the rounds run after an insertion round (independent splits only),
   // non-improving flips made (all rounds, kept or not), and the facets (∞'s included)

@@ -123,6 +123,7 @@ nb::dict stats_dict(const gdel::Stats& s) {
   d["distinct_points"] = s.distinct_points;
   d["rounds"] = s.rounds;
   d["flip_iterations"] = s.flip_iterations;
+  d["sos_order_round"] = s.sos_order_round;
   d["flips23"] = s.flips23;
   d["flips32"] = s.flips32;
   d["exact_evaluations"] = s.exact_evaluations;

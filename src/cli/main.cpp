@@ -151,8 +151,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   del->add_option("--insertion-rule", rule,
                   "gFlip3D: the point each tet inserts per round: circumcenter (nearest to the circumcentre) | "
-                  "centroid | random (for study)")
-      ->check(CLI::IsMember(std::vector<std::string>{"circumcenter", "centroid", "random"}))
+                  "centroid | random | sos (the smallest input index; for study)")
+      ->check(CLI::IsMember(std::vector<std::string>{"circumcenter", "centroid", "random", "sos"}))
       ->capture_default_str();
   del->add_flag("--stats", stats, "print time per stage, counts and memory");
   add_common(del, common);
@@ -265,6 +265,7 @@ int main(int argc, char** argv) {
       o.initial = initial == "grid" ? gdel::Initial::grid : gdel::Initial::Default;
       o.insertion = rule == "random"     ? gdel::InsertionRule::Random
                     : rule == "centroid" ? gdel::InsertionRule::Centroid
+                    : rule == "sos"      ? gdel::InsertionRule::SosOrder
                                          : gdel::InsertionRule::Circumcenter;
       const gdel::Backend backend = gdel::resolve_backend(o.backend);  // BackendUnavailable: exit 4, before reading
 

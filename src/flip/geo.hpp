@@ -26,6 +26,7 @@
 
 #include "geometry/predicates.hpp"
 #include "mesh/conventions.hpp"
+#include "parallel/atomic.hpp"
 #include "parallel/exact_batch.hpp"
 
 namespace gdel::flip {
@@ -47,6 +48,10 @@ struct Geo {
   // quarter scale (integer input within 2^21, K the centroid of four of its points):
   // no exact evaluation touches the scratch.
   bool int_all = false;
+  // Where insphere's exact form counts its exact ties (the unperturbed sign 0, decided by
+  // the perturbation; atomic adds), nullptr: not counted. gFlip3D counts them in its
+  // first rounds (GFlip3D::decide_sos_order).
+  std::int64_t* ties = nullptr;
 
   GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
   // Whether an exact form may go on with work = nullptr (see the top of this file): over
@@ -170,8 +175,10 @@ struct Geo {
                            work);
     if constexpr (Exact) {
       if (geom::no_scratch(work) && !finite_scratch_free()) return par::kUndecided;
+      bool tied = false;
       const int s = geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]],
-                                            sid[t[2]], sid[t[3]], sid[e], work);
+                                            sid[t[2]], sid[t[3]], sid[e], work, ties ? &tied : nullptr);
+      if (tied) par::atomic_add(ties, std::int64_t(1));
       return exact_answer(s);
     } else {
       int s = geom::insphere_filter(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));

@@ -51,6 +51,15 @@ struct FlipConfig {
   bool cavity = false;
   std::int64_t max_flip_iterations = 1 << 20;  // per flip loop; a safety net, never reached in practice
   bool tail_rule = std::getenv("GDEL_FLIP_EVERY_ROUND") == nullptr;  // study knob (ALGORITHMS.md §3.1)
+  // The flip loop after the tail's split-only rounds starts from the tets those rounds
+  // made (with any stuck tets carried): the rest were left by flip loops with nothing to
+  // flip. true: from every tet, as before session 53, which also retries the facets
+  // flip loops left stuck - for about nothing (10^6 sphere: 4 152 failed vertices
+  // against 4 176; uniform: the same 1 086) at a pass of exact tests over every tet on
+  // cospherical input (3.4 s of 20 on the CPU backend; bench/RESULTS.md session 53).
+  // The terminal variant (no flipping before the end) always flips from every tet.
+  // GDEL_FINAL_ALL_TETS=1 sets it (study).
+  bool final_all_tets = par::knob_on("GDEL_FINAL_ALL_TETS");
   // Independent splits (Options::independent_splits): in a round that flips, a tet that
   // holds points splits only when no neighbour that also holds points comes first in a
   // fixed random order of tets (split_defers), so the round's splits share no face; and
@@ -59,6 +68,11 @@ struct FlipConfig {
   // (the original rule) and a stuck tet leaves the active set. Rounds that only split
   // (terminal variant, tail rule) never defer.
   bool independent_splits = false;
+  // rule = Circumcenter: the rounds insert in SoS order (InsertionRule::SosOrder) once
+  // the flipping's exact insphere ties are at least 1/kTieShare of its proposals, decided
+  // once at the first round that brings the proposals to kSosSample
+  // (GFlip3D::decide_sos_order). GDEL_SOS_ORDER_SWITCH=0: never (study).
+  bool sos_order_switch = !par::knob_off("GDEL_SOS_ORDER_SWITCH");
   // Re-order tets by smallest vertex id every reorder_every-th round and once for the
   // output (ALGORITHMS.md §2.2): with curve-sorted points this restores spatial locality
   // in memory (Options::reorder_tets). Each sort only when its temporaries fit under the
@@ -125,7 +139,7 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), carry_(ctx), team_work_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 5) {
+        active_(ctx), carry_(ctx), team_work_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 6) {
     counts_.memset(0);
     int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
     quarter_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_, geom::kQuarterScale);
@@ -163,6 +177,8 @@ class GFlip3D {
     }
     bool flipping = !cfg_.terminal;
     bool flipped_all_along = flipping;
+    bool tail = false;  // flipping turned off by the tail rule
+    counting_ties_ = flipping && cfg_.rule == InsertionRule::Circumcenter && cfg_.sos_order_switch;
     std::int64_t remaining = static_cast<std::int64_t>(todo_.size());
     std::int64_t unsorted = 0;  // points inserted since the last tet sort
     while (remaining > 0) {
@@ -176,6 +192,7 @@ class GFlip3D {
         auto tf = std::chrono::steady_clock::now();
         const std::int64_t it0 = st_.flip_iterations, f0 = st_.flips23 + st_.flips32;
         flip_loop(/*all_tets=*/false, /*with_log=*/remaining > 0);
+        decide_sos_order();
         if (cfg_.independent_splits) carry_ = std::move(active_);  // what is still active: the stuck tets
         if (cfg_.independent_splits && cfg_.nonoptimal) nonoptimal_midrun(remaining > 0);
         t_flip_ += since(tf);
@@ -207,10 +224,13 @@ class GFlip3D {
         // Tail rule (ALGORITHMS.md §3.1): the last tiny rounds are not worth a flip
         // loop each; insert them by splitting and flip once at the end.
         if (cfg_.tail_rule && remaining < inserted && inserted < n_ / 10) {
-          carry_.release();  // the final flip loop looks at every tet
+          if (cfg_.final_all_tets) carry_.release();  // the final flip loop looks at every tet
           flipping = false;
           flipped_all_along = false;
+          tail = true;
         }
+      } else if (tail && !cfg_.final_all_tets) {
+        carry_ = std::move(active_);  // the tail's new tets: the next round's set adds them (insert_round)
       }
     }
     st_.stages.push_back({"insertion (split + relocate)", t_insert_});
@@ -222,8 +242,10 @@ class GFlip3D {
       st_.stages.push_back({"flipping (InsFlip rounds)", t_flip_});
       st_.stages.push_back({"relocation through flip DAG", t_relocate_});
       auto tf = std::chrono::steady_clock::now();
-      flip_loop(/*all_tets=*/true, /*with_log=*/false);
-      st_.stages.push_back({"final flipping of all tets", since(tf)});
+      const bool all = !tail || cfg_.final_all_tets;
+      if (!all) active_ = std::move(carry_);  // the tail's tets (and stuck ones), alive (insert_round)
+      flip_loop(/*all_tets=*/all, /*with_log=*/false);
+      st_.stages.push_back({all ? "final flipping of all tets" : "final flipping of the tail's tets", since(tf)});
     }
     if (cfg_.nonoptimal) {
       auto tn = std::chrono::steady_clock::now();
@@ -311,7 +333,10 @@ class GFlip3D {
     log_.release();
   }
   vid_t infinite() const { return static_cast<vid_t>(n_); }
-  Geo geo() { return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_, int_all_}; }
+  Geo geo() {
+    return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_, int_all_,
+               counting_ties_ ? counts_.data() + 5 : nullptr};
+  }
 
   // --- a given initial structure (src/grid/initial.hpp, Options::initial = grid) ---------
   // Instead of init()'s first tetrahedron: a valid triangulation of some of the points
@@ -663,6 +688,35 @@ class GFlip3D {
     throw Error("gflip3d: no interior point of the first tetrahedron is representable (tetrahedron too thin)");
   }
 
+  // --- insertion in SoS order ---------------------------------------------------------
+  // On cospherical input every insphere test among the sphere's points is an exact tie,
+  // and the lifting perturbation (Geo::insphere) decides it by SoS index: a point with a
+  // larger index is outside. The Delaunay triangulation of the perturbed points is then
+  // the one that inserting in index order builds without a flip among the sphere's
+  // existing tets; inserted in another order (the circumcentre rule's), a point with a
+  // smaller index than its neighbours conflicts with their tets, and the flips that fix
+  // that get stuck far more often (10^5 points on a sphere: 17 859 failed vertices, 577
+  // with the switch; bench/RESULTS.md, session 53). So the default rule counts the exact
+  // ties of the flipping's insphere tests (Geo::ties) until its proposals reach
+  // kSosSample, and switches when ties are at least 1/kTieShare of them (sphere ≈ 3/4,
+  // grid ≈ 1/75, uniform 0). A choice of order, never a decision: the output is the same.
+  // Near-cospherical input whose tests only miss the filter (no exact tie) is not
+  // switched: there index order is one random order among others, and measured no better.
+  static constexpr std::int64_t kSosSample = 256;
+  static constexpr std::int64_t kTieShare = 8;
+  void decide_sos_order() {
+    if (!counting_ties_ || proposed_ < kSosSample) return;
+    counting_ties_ = false;
+    const std::int64_t ties = counts_.get(5);
+    if (trace_)
+      std::fprintf(stderr, "gflip3d: %lld exact insphere ties in %lld proposals\n", static_cast<long long>(ties),
+                   static_cast<long long>(proposed_));
+    if (ties * kTieShare >= proposed_) {
+      sos_order_ = true;
+      st_.sos_order_round = st_.rounds;
+    }
+  }
+
   // --- one insertion round: choose, split, relocate ---------------------------------
   // The low half of a tet's best-point key: it decides between equal scores. Equal
   // scores are the rule on degenerate input, and the choice matters (H100, 10^6 grid and
@@ -713,10 +767,17 @@ class GFlip3D {
     const InsertionRule rule = cfg_.rule;
     const double is = inv_scale_;
     const int tie = tie_mode_;
-    // 1. each tet keeps its best point: key = score bits << 32 | tie_break(point)
+    const bool by_sid = rule == InsertionRule::SosOrder || sos_order_;
+    // 1. each tet keeps its best point: key = score bits << 32 | tie_break(point); in SoS
+    // order the score is ~sid (the smallest index first; indices past 2^32 - 2 tie)
     par::parallel_for(ctx_, u, [=] GDEL_LAMBDA(std::int64_t k) {
       const vid_t q = U[k];
       const tid_t t = vt[q];
+      if (by_sid) {
+        const std::uint64_t s = 0xffffffffu - std::min<std::uint64_t>(g.sid[q], 0xfffffffeu);
+        par::atomic_max(best + t, (s << 32) | tie_break(std::uint32_t(q), tie));
+        return;
+      }
       const vid_t* v = m.tet[t].v;
       // normalised copies of the 4 vertices and q (a choice, not a decision)
       double P[5][3];
@@ -912,6 +973,7 @@ class GFlip3D {
   // With active_deferred_, na is the active set's bound and counts_[4] its length: the
   // positions past it propose nothing.
   bool flip_iteration(std::int64_t na, bool with_log) {
+    proposed_ += na;  // (a bound where the active set is deferred)
     MeshView m = mesh_.view();
     const Geo g = geo();
     const tid_t* A = active_.data();
@@ -1729,6 +1791,10 @@ class GFlip3D {
   int spread_block_ = spread_block_setting();
   bool split_exact_ = split_exact_setting();
   bool active_by_slots_ = par::knob_on("GDEL_ACTIVE_SLOTS");
+  // insertion in SoS order (decide_sos_order): tets proposed so far, ties being counted
+  // (counts_[5]), switched
+  std::int64_t proposed_ = 0;
+  bool counting_ties_ = false, sos_order_ = false;
   bool active_listed_large_ = !par::knob_off("GDEL_ACTIVE_LISTED_LARGE");
   // commit_flips lists and sorts a large iteration's next active set (no pass over the
   // slots) when its bound is below this fraction of the slots: the sort moves ≈ 32 bytes

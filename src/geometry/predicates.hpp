@@ -569,13 +569,15 @@ GDEL_HD int insphere_sos(const double* a, const double* b, const double* c,
   return detail::lifted_sos_degenerate(p, nullptr, ids, false, work);
 }
 
+// tied (optional): set to true when the unperturbed sign is 0 (the perturbation decided).
 template <class Work>
 GDEL_HD int insphere_lift_sos(const double* a, const double* b, const double* c,
                               const double* d, const double* e, std::int64_t ia,
                               std::int64_t ib, std::int64_t ic, std::int64_t id,
-                              std::int64_t ie, Work work) {
+                              std::int64_t ie, Work work, bool* tied = nullptr) {
   const int s = insphere(a, b, c, d, e, work);
   if (s != 0) return s;
+  if (tied) *tied = true;  // (the caller's count of exact ties)
   const double* p[5] = {a, b, c, d, e};
   const std::int64_t ids[5] = {ia, ib, ic, id, ie};
   return detail::lift_sos_degenerate(p, nullptr, ids, false, work);
