@@ -233,6 +233,7 @@ class GFlip3D {
         carry_ = std::move(active_);  // the tail's new tets: the next round's set adds them (insert_round)
       }
     }
+    counting_ties_ = false;  // (undecided on small input: nothing counts past the rounds)
     st_.stages.push_back({"insertion (split + relocate)", t_insert_});
     if (t_reorder_ > 0) st_.stages.push_back({"tet reordering", t_reorder_});
     if (flipped_all_along) {
