@@ -923,7 +923,7 @@ class GFlip3D {
     }
     // The log's storage: with a log, its capacity at once (commit_flips flushes before
     // it would outgrow it, so it never grows by a copy: at 10^8 points the copy was the
-    // run's peak); without one (the last loop over every tet), given back.
+    // run's peak); without one (the last loop, after the tail), given back.
     const std::int64_t log_cap = log_capacity();
     relocate_through_dag();  // a log left by the caller's flips (non-optimal steps) first
     log_.release();
@@ -1108,9 +1108,9 @@ class GFlip3D {
     const bool keep_stuck = cfg_.independent_splits;
     auto is_proposer = [=] GDEL_LAMBDA(std::int64_t k) { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); };
     // The proposer list (positions in A: na < 2^31, as tets). Over a large active set it
-    // is counted first and sized exactly: in the last flip loop, over every tet, few of
-    // them propose, and a list sized by the active set was 54 bytes per point of the
-    // run's peak (bench/RESULTS.md). Over a smaller one (par::kUncountedListMax) it is
+    // is counted first and sized exactly: in a flip loop over every tet (the terminal
+    // variant's, or GDEL_FINAL_ALL_TETS) few of them propose, and a list sized by the
+    // active set was 54 bytes per point of the run's peak (bench/RESULTS.md). Over a smaller one (par::kUncountedListMax) it is
     // sized by the set, which saves a pass and a wait on the count in most iterations.
     // Up to the host's one read of the counts below, each step is bounded by what the
     // host knows (npb: the list's length) and cut by the counts on the backend (counts_):
