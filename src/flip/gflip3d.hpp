@@ -1110,8 +1110,9 @@ class GFlip3D {
     // The proposer list (positions in A: na < 2^31, as tets). Over a large active set it
     // is counted first and sized exactly: in a flip loop over every tet (the terminal
     // variant's, or GDEL_FINAL_ALL_TETS) few of them propose, and a list sized by the
-    // active set was 54 bytes per point of the run's peak (bench/RESULTS.md). Over a smaller one (par::kUncountedListMax) it is
-    // sized by the set, which saves a pass and a wait on the count in most iterations.
+    // active set was 54 bytes per point of the run's peak (bench/RESULTS.md). Over a
+    // smaller one (par::kUncountedListMax) it is sized by the set, which saves a pass and
+    // a wait on the count in most iterations.
     // Up to the host's one read of the counts below, each step is bounded by what the
     // host knows (npb: the list's length) and cut by the counts on the backend (counts_):
     // the proposers, the accepted flips and the 2-3 flips among them come to the host
