@@ -230,7 +230,7 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   // The mesh is consumed one array at a time, so that the output never sits beside
   // the whole mesh.
   mesh.state().release();
-  mesh.face_flags().release();
+  mesh.release_faces();  // (the neighbours below: their tets alone)
   Buffer<std::int32_t, B> tv(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
   std::int32_t* tvp = tv.data();
   const I64* sp = sid.data();
@@ -245,9 +245,8 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
     if (fp[t + 1] == fp[t]) return;
     const I64 d = fp[t];
     for (int i = 0; i < 4; ++i) {
-      const fid_t o = mv.opp(4 * t + i);
-      const tid_t u = facet_tet(o);
-      tnp[4 * d + i] = (o < 0 || fp[u + 1] == fp[u]) ? -1 : fp[u];
+      const tid_t u = mv.opp_tet(4 * t + i);
+      tnp[4 * d + i] = (u < 0 || fp[u + 1] == fp[u]) ? -1 : fp[u];
     }
   });
   mesh.release_opp();

@@ -97,7 +97,7 @@ struct FlipConfig {
   // ... skipped when the stuck facets exceed this share of the points (1: never skipped)
   double nonoptimal_max_share = 1.0;
   // ... and the state with the fewest non-locally-Delaunay facets is kept (a copy of the
-  // mesh, ≈ 53 bytes per tet, beside the work arrays); without it (Auto, whose repair
+  // mesh, 37 bytes per tet slot, beside the work arrays); without it (Auto, whose repair
   // makes any state exact) the last state is the result
   bool nonoptimal_keep_best = true;
   int nonoptimal_rounds = 16;
@@ -351,9 +351,8 @@ class GFlip3D {
     inv_scale_ = inverse_scale();
     mesh_.reserve(std::max<std::int64_t>(initial_slots(), 2 * nt + 64));  // fresh slots are dead
     par::detail::Memory<B>::copy(ctx_, mesh_.tets().data(), tets.data(), static_cast<std::size_t>(nt) * sizeof(mesh::Tet));
-    mesh_.set_opp_from(opp.data(), 4 * nt);
+    mesh_.set_opp_from(opp.data(), 4 * nt);  // (face flags cleared)
     par::fill(ctx_, mesh_.state().data(), static_cast<std::size_t>(nt), std::uint8_t(mesh::kAlive));
-    mesh_.face_flags().memset(0);
     mesh_.set_size(nt);
     grow_aux();
     vert_tet_ = std::move(vert_tet);
@@ -536,10 +535,9 @@ class GFlip3D {
     {
       Buffer<fid_t, B> ob(ctx_);
       ob.assign(opp);
-      mesh_.set_opp_from(ob.data(), 20);
+      mesh_.set_opp_from(ob.data(), 20);  // (face flags cleared)
     }
     par::fill(ctx_, mesh_.state().data(), 5, std::uint8_t(mesh::kAlive));
-    mesh_.face_flags().memset(0);
     mesh_.set_size(5);
     grow_aux();
 
@@ -854,20 +852,18 @@ class GFlip3D {
         m.state[c] = mesh::kAlive | mesh::kChanged;
         for (int kk = 0; kk < 3; ++kk) {
           const int j = face_vertex(i, kk);
-          m.set_opp(4 * std::int64_t(c) + kk, pack_facet(ch[4 * s + j], split_shared_face(j, i)));
-          m.set_face_flags(c, kk, mesh::kInternal);
+          m.set_opp_flags(4 * std::int64_t(c) + kk, pack_facet(ch[4 * s + j], split_shared_face(j, i)),
+                          mesh::kInternal);
         }
         const fid_t ext = oo[4 * s + i];
-        m.set_face_flags(c, 3, 0);
         const tid_t nt = facet_tet(ext);
         const int nf = facet_face(ext);
         const std::int32_t ns = split_of[nt];
         if (ns >= 0) {
-          m.set_opp(4 * std::int64_t(c) + 3, pack_facet(ch[4 * std::int64_t(ns) + nf], 3));
+          m.set_opp_flags(4 * std::int64_t(c) + 3, pack_facet(ch[4 * std::int64_t(ns) + nf], 3), 0);
         } else {
-          m.set_opp(4 * std::int64_t(c) + 3, ext);
-          m.set_opp(4 * std::int64_t(nt) + nf, pack_facet(c, 3));
-          m.set_face_flags(nt, nf, 0);
+          m.set_opp_flags(4 * std::int64_t(c) + 3, ext, 0);
+          m.set_opp_flags(4 * std::int64_t(nt) + nf, pack_facet(c, 3), 0);
         }
       }
     });
@@ -1335,10 +1331,11 @@ class GFlip3D {
         int k = 0;  // h's entry for u's face j
         while (k < 5 && !(ext_old_face(ec[6 * h + k]) == j && rec[h].in[ext_old_tet(ec[6 * h + k])] == u)) ++k;
         const std::uint16_t ck = ec[6 * h + k];
-        m.set_opp(4 * std::int64_t(mine) + ext_new_face(c), pack_facet(rec[h].out[ext_new_tet(ck)], ext_new_face(ck)));
+        // (an external face: write_flip cleared its flags)
+        m.set_opp_flags(4 * std::int64_t(mine) + ext_new_face(c),
+                        pack_facet(rec[h].out[ext_new_tet(ck)], ext_new_face(ck)), 0);
       } else {
-        m.set_opp(4 * std::int64_t(u) + j, pack_facet(mine, ext_new_face(c)));
-        m.set_face_flags(u, j, 0);
+        m.set_opp_flags(4 * std::int64_t(u) + j, pack_facet(mine, ext_new_face(c)), 0);
       }
     };
     // a 3-2 flip's third slot: dead, and on the free stack (TetMesh::reserve_free)

@@ -113,7 +113,7 @@ class SequentialInsertion {
       for (int i = 0; i < 4; ++i) {
         c.v[i] = alive ? mv.tet[t].v[i] : kNoVertex;
         const tid_t u = mv.opp_t[4 * t + i];
-        c.n[i] = !alive || u < 0 ? -1 : (u << 2 | mv.opp_f[4 * t + i]);
+        c.n[i] = !alive || u < 0 ? -1 : (u << 2 | (mv.face[4 * t + i] & mesh::MeshView::kFaceMask));
       }
       if (!alive) workers_[0].free_.push_back(static_cast<tid_t>(t));
     }
@@ -171,8 +171,7 @@ class SequentialInsertion {
       for (int i = 0; i < 4; ++i) {
         mv.tet[d].v[i] = c.v[i];
         mv.opp_t[4 * d + i] = c.n[i] >= 0 ? sl[tet_of(c.n[i])] : kNoTet;
-        mv.opp_f[4 * d + i] = static_cast<std::uint8_t>(c.n[i] >= 0 ? face_of(c.n[i]) : 0);
-        mv.fflag[4 * d + i] = 0;
+        mv.face[4 * d + i] = mesh::MeshView::face_byte(c.n[i] >= 0 ? face_of(c.n[i]) : 0, 0);
       }
       mv.state[d] = mesh::kAlive;
     });

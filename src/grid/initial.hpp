@@ -304,13 +304,12 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   tid_t* vt = vert_tet.data();
   Buffer<std::uint8_t, B> state(ctx, static_cast<std::size_t>(ntot));
   par::fill(ctx, state.data(), static_cast<std::size_t>(ntot), std::uint8_t(mesh::kAlive));
-  Buffer<std::uint8_t, B> fflag(ctx, static_cast<std::size_t>(4 * ntot));
-  fflag.memset(0);
-  // the mesh's split adjacency (neighbour tet, its face) for the walks
+  // the mesh's split adjacency (neighbour tet; its face in the face byte, flags clear)
+  // for the walks
   Buffer<tid_t, B> opp_t(ctx, static_cast<std::size_t>(4 * ntot));
-  Buffer<std::uint8_t, B> opp_f(ctx, static_cast<std::size_t>(4 * ntot));
-  const mesh::MeshView mv{T, opp_t.data(), opp_f.data(), state.data(), fflag.data()};
-  par::parallel_for(ctx, 4 * ntot, [=] GDEL_LAMBDA(std::int64_t f) { mv.set_opp(f, O[f]); });
+  Buffer<std::uint8_t, B> face(ctx, static_cast<std::size_t>(4 * ntot));
+  const mesh::MeshView mv{T, opp_t.data(), face.data(), state.data()};
+  par::parallel_for(ctx, 4 * ntot, [=] GDEL_LAMBDA(std::int64_t f) { mv.set_opp_flags(f, O[f], 0); });
   const flip::Geo g = alg.geo();
   auto locate = [=] GDEL_LAMBDA(std::int64_t q, double* work, bool exact) -> bool {
     const vid_t s = site[voxel_of(q)];

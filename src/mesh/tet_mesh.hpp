@@ -3,12 +3,16 @@
 //
 //   tet[t]    4 vertex ids (internal ids; kInfinite for the point at infinity)
 //   opp[4t+i] the neighbour across face i as a packed facet (t' << 2 | i'), or -1;
-//             stored as two arrays, the tet t' (4 bytes, kNoTet for none) and its face
-//             i' (1 byte): 5 bytes instead of a 64-bit packed facet, which tet-face
-//             counts past 2^31 would need (MeshView::opp / set_opp pack and unpack)
+//             stored as the tet t' (opp_t, 4 bytes, kNoTet for none) and its face i'
+//             (bits 0-1 of the face byte below): 4 bytes and 2 bits instead of a 64-bit
+//             packed facet, which tet-face counts past 2^31 would need (MeshView::opp /
+//             set_opp pack and unpack)
+//   face[4t+i] the face byte: bits 0-1 the neighbour's face i', bits 2-4 the face's
+//             FaceFlag bits; one byte per face, so that threads owning different faces
+//             of a tet never share a word, and one array where the neighbour's face and
+//             the flags were two: a tet's adjacency is two accesses (16 + 4 bytes), and
+//             a face rewritten with its flags one store (bench/RESULTS.md, session 54)
 //   state[t]  TetState bits (alive, changed, ...)
-//   fflag[4t+i] per-face FaceFlag bits (one byte per face, so that threads owning
-//             different faces of a tet never share a word)
 //
 // Slots: a tet slot is alive or free. Free slots sit on a stack. Allocation and
 // release are deterministic (so the same input gives the same slots, hence the same
@@ -50,23 +54,34 @@ enum FaceFlag : std::uint8_t {
 // Plain pointers for use inside kernels (trivially copyable).
 struct MeshView {
   Tet* tet;
-  tid_t* opp_t;          // neighbour tet across face k = 4t+i (kNoTet: none)
-  std::uint8_t* opp_f;   // its face
+  tid_t* opp_t;         // neighbour tet across face k = 4t+i (kNoTet: none)
+  std::uint8_t* face;   // face byte of face k: its neighbour's face (bits 0-1), FaceFlag bits (2-4)
   std::uint8_t* state;
-  std::uint8_t* fflag;
+
+  static constexpr int kFlagShift = 2;
+  static constexpr std::uint8_t kFaceMask = 3;
+  GDEL_HD static std::uint8_t face_byte(int nb_face, std::uint8_t flags) {
+    return static_cast<std::uint8_t>((nb_face & kFaceMask) | flags << kFlagShift);
+  }
 
   GDEL_HD fid_t opp(std::int64_t k) const {
     const tid_t u = opp_t[k];
-    return u < 0 ? fid_t(-1) : pack_facet(u, opp_f[k]);
+    return u < 0 ? fid_t(-1) : pack_facet(u, face[k] & kFaceMask);
   }
   GDEL_HD tid_t opp_tet(std::int64_t k) const { return opp_t[k]; }
+  // The neighbour across face k, its flags kept (a read of the face byte, then a store).
   GDEL_HD void set_opp(std::int64_t k, fid_t f) const {
     opp_t[k] = f < 0 ? kNoTet : facet_tet(f);
-    opp_f[k] = static_cast<std::uint8_t>(f < 0 ? 0 : facet_face(f));
+    face[k] = static_cast<std::uint8_t>((face[k] & ~kFaceMask) | (f < 0 ? 0 : facet_face(f)));
+  }
+  // The neighbour across face k and the face's flags, in one store each.
+  GDEL_HD void set_opp_flags(std::int64_t k, fid_t f, std::uint8_t flags) const {
+    opp_t[k] = f < 0 ? kNoTet : facet_tet(f);
+    face[k] = face_byte(f < 0 ? 0 : facet_face(f), flags);
   }
 
-  // A tet's four neighbour tets, their faces and its face flags, each as one access (16,
-  // 4 and 4 bytes: per tet the arrays are 16- and 4-byte aligned) instead of four.
+  // A tet's four neighbour tets, their faces and its face flags, each as one access (16
+  // and 4 bytes: per tet the arrays are 16- and 4-byte aligned) instead of four.
   GDEL_HD void get_opp_tets(tid_t t, tid_t nt[4]) const {
 #if defined(__CUDA_ARCH__)
     const int4 q = *reinterpret_cast<const int4*>(opp_t + 4 * std::int64_t(t));
@@ -75,7 +90,8 @@ struct MeshView {
     std::memcpy(nt, opp_t + 4 * std::int64_t(t), 4 * sizeof(tid_t));
 #endif
   }
-  GDEL_HD static void get4(const std::uint8_t* p, std::uint8_t b[4]) {
+  GDEL_HD void get_face_bytes(tid_t t, std::uint8_t b[4]) const {
+    const std::uint8_t* p = face + 4 * std::int64_t(t);
 #if defined(__CUDA_ARCH__)
     const uchar4 q = *reinterpret_cast<const uchar4*>(p);
     b[0] = q.x, b[1] = q.y, b[2] = q.z, b[3] = q.w;
@@ -83,27 +99,35 @@ struct MeshView {
     std::memcpy(b, p, 4);
 #endif
   }
-  GDEL_HD void get_face_flags(tid_t t, std::uint8_t fl[4]) const { get4(fflag + 4 * std::int64_t(t), fl); }
+  GDEL_HD void get_face_flags(tid_t t, std::uint8_t fl[4]) const {
+    get_face_bytes(t, fl);
+    for (int i = 0; i < 4; ++i) fl[i] = static_cast<std::uint8_t>(fl[i] >> kFlagShift);
+  }
   GDEL_HD void get_adj(tid_t t, tid_t nt[4], std::uint8_t nf[4]) const {
     get_opp_tets(t, nt);
-    get4(opp_f + 4 * std::int64_t(t), nf);
+    get_face_bytes(t, nf);
+    for (int i = 0; i < 4; ++i) nf[i] &= kFaceMask;
   }
   GDEL_HD void put_adj(tid_t t, const tid_t nt[4], const std::uint8_t nf[4], const std::uint8_t fl[4]) const {
     const std::int64_t k = 4 * std::int64_t(t);
+    std::uint8_t b[4];
+    for (int i = 0; i < 4; ++i) b[i] = face_byte(nf[i], fl[i]);
 #if defined(__CUDA_ARCH__)
     *reinterpret_cast<int4*>(opp_t + k) = make_int4(nt[0], nt[1], nt[2], nt[3]);
-    *reinterpret_cast<uchar4*>(opp_f + k) = make_uchar4(nf[0], nf[1], nf[2], nf[3]);
-    *reinterpret_cast<uchar4*>(fflag + k) = make_uchar4(fl[0], fl[1], fl[2], fl[3]);
+    *reinterpret_cast<uchar4*>(face + k) = make_uchar4(b[0], b[1], b[2], b[3]);
 #else
     std::memcpy(opp_t + k, nt, 4 * sizeof(tid_t));
-    std::memcpy(opp_f + k, nf, 4);
-    std::memcpy(fflag + k, fl, 4);
+    std::memcpy(face + k, b, 4);
 #endif
   }
 
   GDEL_HD bool alive(tid_t t) const { return (state[t] & kAlive) != 0; }
-  GDEL_HD std::uint8_t face_flags(tid_t t, int i) const { return fflag[4 * std::int64_t(t) + i]; }
-  GDEL_HD void set_face_flags(tid_t t, int i, std::uint8_t f) const { fflag[4 * std::int64_t(t) + i] = f; }
+  GDEL_HD std::uint8_t face_flags(tid_t t, int i) const { return face[4 * std::int64_t(t) + i] >> kFlagShift; }
+  // The face's flags, its neighbour's face kept (a read of the face byte, then a store).
+  GDEL_HD void set_face_flags(tid_t t, int i, std::uint8_t f) const {
+    std::uint8_t& b = face[4 * std::int64_t(t) + i];
+    b = face_byte(b, f);
+  }
   GDEL_HD void link(tid_t t, int i, tid_t u, int j) const {
     set_opp(4 * std::int64_t(t) + i, pack_facet(u, j));
     set_opp(4 * std::int64_t(u) + j, pack_facet(t, i));
@@ -126,7 +150,7 @@ template <class B>
 class TetMesh {
  public:
   explicit TetMesh(par::Context<B>& ctx)
-      : ctx_(&ctx), tet_(ctx), opp_t_(ctx), opp_f_(ctx), state_(ctx), fflag_(ctx), free_(ctx) {}
+      : ctx_(&ctx), tet_(ctx), opp_t_(ctx), face_(ctx), state_(ctx), free_(ctx) {}
 
   par::Context<B>& context() { return *ctx_; }
   std::int64_t capacity() const { return static_cast<std::int64_t>(tet_.size()); }
@@ -153,9 +177,8 @@ class TetMesh {
     };
     grow(tet_, 1);
     grow(opp_t_, 4);
-    grow(opp_f_, 4);
+    grow(face_, 4);
     grow(state_, 1);
-    grow(fflag_, 4);
     std::uint8_t* st = state_.data();
     par::parallel_for(*ctx_, cap - old, [=] GDEL_LAMBDA(std::int64_t k) { st[old + k] = 0; });
   }
@@ -204,9 +227,8 @@ class TetMesh {
     reserve(n);
     M::copy(*ctx_, tet_.data(), o.tet_.data(), static_cast<std::size_t>(n) * sizeof(Tet));
     M::copy(*ctx_, opp_t_.data(), o.opp_t_.data(), static_cast<std::size_t>(4 * n) * sizeof(tid_t));
-    M::copy(*ctx_, opp_f_.data(), o.opp_f_.data(), static_cast<std::size_t>(4 * n));
+    M::copy(*ctx_, face_.data(), o.face_.data(), static_cast<std::size_t>(4 * n));
     M::copy(*ctx_, state_.data(), o.state_.data(), static_cast<std::size_t>(n));
-    M::copy(*ctx_, fflag_.data(), o.fflag_.data(), static_cast<std::size_t>(4 * n));
     if (free_.size() < static_cast<std::size_t>(o.free_count_)) free_.resize(static_cast<std::size_t>(o.free_count_));
     M::copy(*ctx_, free_.data(), o.free_.data(), static_cast<std::size_t>(o.free_count_) * sizeof(tid_t));
     if (size_ > n) {
@@ -218,7 +240,7 @@ class TetMesh {
   }
 
   MeshView view() {
-    return MeshView{tet_.data(), opp_t_.data(), opp_f_.data(), state_.data(), fflag_.data()};
+    return MeshView{tet_.data(), opp_t_.data(), face_.data(), state_.data()};
   }
 
   // Moves alive tets to [0, alive) keeping their order, remaps neighbour references;
@@ -285,8 +307,7 @@ class TetMesh {
     par::Buffer<Tet, B> scratch(*ctx_, shrink ? 0 : static_cast<std::size_t>(std::max<std::int64_t>(alive, 1)));
     remap_records(tet_, 1, alive, shrink, scratch, rm, [] GDEL_LAMBDA(const Tet& x) { return x; });
     remap_records(opp_t_, 4, alive, shrink, scratch, rm, [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; });
-    remap_records(opp_f_, 4, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
-    remap_records(fflag_, 4, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
+    remap_records(face_, 4, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
     remap_records(state_, 1, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
     if (!shrink && n > alive) {  // the slots past the alive tets are dead
       std::uint8_t* st = state_.data();
@@ -303,7 +324,7 @@ class TetMesh {
   template <class T, class X>
   void remap_records(par::Buffer<T, B>& buf, std::int64_t per, std::int64_t alive, bool shrink,
                      par::Buffer<Tet, B>& scratch, const tid_t* rm, X x) {
-    static_assert(alignof(T) <= alignof(Tet));  // (and per * sizeof(T) <= sizeof(Tet) for all five arrays)
+    static_assert(alignof(T) <= alignof(Tet));  // (and per * sizeof(T) <= sizeof(Tet) for all four arrays)
     par::Buffer<T, B> nb(*ctx_, shrink ? static_cast<std::size_t>(std::max<std::int64_t>(per * alive, 1)) : 0);
     T* dst = shrink ? nb.data() : reinterpret_cast<T*>(scratch.data());
     const T* src = buf.data();
@@ -322,22 +343,27 @@ class TetMesh {
   // Adjacency: packed facets (4 per slot, -1: none) to / from the split arrays.
   std::vector<fid_t> opp_to_host() const {
     const std::vector<tid_t> t = opp_t_.to_host();
-    const std::vector<std::uint8_t> f = opp_f_.to_host();
+    const std::vector<std::uint8_t> f = face_.to_host();
     std::vector<fid_t> o(t.size());
-    for (std::size_t k = 0; k < t.size(); ++k) o[k] = t[k] < 0 ? fid_t(-1) : pack_facet(t[k], f[k]);
+    for (std::size_t k = 0; k < t.size(); ++k)
+      o[k] = t[k] < 0 ? fid_t(-1) : pack_facet(t[k], f[k] & MeshView::kFaceMask);
     return o;
   }
-  // Slots [0, count / 4) from count packed facets in backend memory.
+  // Slots [0, count / 4) from count packed facets in backend memory; their face flags
+  // cleared.
   void set_opp_from(const fid_t* src, std::int64_t count) {
     const MeshView v = view();
-    par::parallel_for(*ctx_, count, [=] GDEL_LAMBDA(std::int64_t k) { v.set_opp(k, src[k]); });
+    par::parallel_for(*ctx_, count, [=] GDEL_LAMBDA(std::int64_t k) { v.set_opp_flags(k, src[k], 0); });
   }
   void release_opp() {
     opp_t_.release();
-    opp_f_.release();
+    face_.release();
   }
+  // The face bytes alone (neighbours' faces, face flags), for an output stage that reads
+  // only the neighbour tets (MeshView::opp_tet) from here on.
+  void release_faces() { face_.release(); }
   par::Buffer<std::uint8_t, B>& state() { return state_; }
-  par::Buffer<std::uint8_t, B>& face_flags() { return fflag_; }
+  par::Buffer<std::uint8_t, B>& face_bytes() { return face_; }  // (MeshView::face)
   // Sets the high-water mark (slots [0, size) in use) and empties the free stack
   // (e.g. after building tets directly).
   void set_size(std::int64_t size) {
@@ -350,9 +376,8 @@ class TetMesh {
   par::Context<B>* ctx_;
   par::Buffer<Tet, B> tet_;
   par::Buffer<tid_t, B> opp_t_;
-  par::Buffer<std::uint8_t, B> opp_f_;
+  par::Buffer<std::uint8_t, B> face_;  // the face bytes (MeshView::face)
   par::Buffer<std::uint8_t, B> state_;
-  par::Buffer<std::uint8_t, B> fflag_;
   par::Buffer<tid_t, B> free_;  // the free stack: as long as it has ever been deep, not the capacity
   std::int64_t size_ = 0;        // high-water mark of used slots
   std::int64_t free_count_ = 0;  // entries on the free stack

@@ -33,15 +33,31 @@ void tet_mesh_cases(par::Context<B>& ctx) {
     }
     v.state[a] = v.state[b] = kAlive;
     for (int i = 0; i < 4; ++i) v.set_face_flags(a, i, 0), v.set_face_flags(b, i, 0);
+    v.set_face_flags(a, 3, kSpecial | kSphereFail);  // flags, then the neighbour: both kept
     v.link(a, 3, b, 3);  // face opposite vertex 3 (= 0,1,2) in both
+    v.set_face_flags(b, 3, kInternal);                // the neighbour, then flags: both kept
     v.set_face_flags(a, 2, kSpecial | kSphereFail);
   });
   auto probs = check_invariants(m, 5);
   EXPECT_TRUE(probs.ok()) << (probs.items.empty() ? "" : probs.items[0]);
   EXPECT_EQ(m.alive_count(), 2);
-  auto ff = m.face_flags().to_host();
-  tid_t lo = std::min(ids[0], ids[1]);
-  EXPECT_EQ(ff[4 * lo + 2], kSpecial | kSphereFail);
+  {
+    const tid_t lo = std::min(ids[0], ids[1]), hi = std::max(ids[0], ids[1]);
+    par::Buffer<std::uint8_t, B> fl(ctx, 8);
+    std::uint8_t* flp = fl.data();
+    par::parallel_for(ctx, 4, [=] GDEL_LAMBDA(std::int64_t i) {
+      flp[i] = v.face_flags(lo, static_cast<int>(i));
+      flp[4 + i] = v.face_flags(hi, static_cast<int>(i));
+    });
+    const auto ff = fl.to_host();
+    EXPECT_EQ(ff[2], kSpecial | kSphereFail);
+    EXPECT_EQ(ff[3], kSpecial | kSphereFail);
+    EXPECT_EQ(ff[4 + 3], kInternal);
+    EXPECT_EQ(ff[0], 0);
+    const auto op = m.opp_to_host();
+    EXPECT_EQ(op[4 * lo + 3], pack_facet(hi, 3));
+    EXPECT_EQ(op[4 * hi + 3], pack_facet(lo, 3));
+  }
 
   // Break symmetry: detected.
   par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.set_opp(4 * 0 + 3, pack_facet(1, 2)); });
@@ -90,7 +106,8 @@ void tet_mesh_cases(par::Context<B>& ctx) {
     EXPECT_EQ(stv[0] & kAlive, kAlive);
     EXPECT_EQ(stv[2] & kAlive, kAlive);
     EXPECT_EQ(stv[3], 0);
-    EXPECT_EQ(m.face_flags().to_host()[4 * 1 + 2], kSpecial | kSphereFail);  // old slot 0's face 2
+    // old slot 0's face 2
+    EXPECT_EQ(m.face_bytes().to_host()[4 * 1 + 2] >> MeshView::kFlagShift, kSpecial | kSphereFail);
     // and back to slot order for the compaction checks below
     m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); }, 4);
   }
