@@ -49,8 +49,8 @@ struct Geo {
   // no exact evaluation touches the scratch.
   bool int_all = false;
   // Where insphere's exact form counts its exact ties (the unperturbed sign 0, decided by
-  // the perturbation; atomic adds), nullptr: not counted. gFlip3D counts them in its
-  // first rounds (GFlip3D::decide_sos_order).
+  // the perturbation; atomic adds) of tets that are not flat, nullptr: not counted.
+  // gFlip3D counts them in its first rounds (GFlip3D::decide_sos_order).
   std::int64_t* ties = nullptr;
 
   GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
@@ -178,7 +178,11 @@ struct Geo {
       bool tied = false;
       const int s = geom::insphere_lift_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), sid[t[0]], sid[t[1]],
                                             sid[t[2]], sid[t[3]], sid[e], work, ties ? &tied : nullptr);
-      if (tied) par::atomic_add(ties, std::int64_t(1));
+      // a tie of a flat tet is not counted: four coplanar points (e.g. four collinear ones
+      // among the five, as on two skew lines) tie with no cosphericity, and the count is
+      // for cospherical input (GFlip3D::decide_sos_order; bench/RESULTS.md, session 54)
+      if (tied && geom::orient3d(p(t[0]), p(t[1]), p(t[2]), p(t[3]), work) != 0)
+        par::atomic_add(ties, std::int64_t(1));
       return exact_answer(s);
     } else {
       int s = geom::insphere_filter(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));

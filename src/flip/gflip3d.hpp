@@ -697,8 +697,11 @@ class GFlip3D {
   // that get stuck far more often (10^5 points on a sphere: 17 859 failed vertices, 577
   // with the switch; bench/RESULTS.md, session 53). So the default rule counts the exact
   // ties of the flipping's insphere tests (Geo::ties) until its proposals reach
-  // kSosSample, and switches when ties are at least 1/kTieShare of them (sphere ≈ 3/4,
-  // grid ≈ 1/75, uniform 0). A choice of order, never a decision: the output is the same.
+  // kSosSample, and switches when ties are at least 1/kTieShare of them (sphere ≈ 2/3,
+  // grid and uniform 0). Ties of flat tets are not counted: four collinear points among
+  // the five tie with no cosphericity (two skew lines: index order along the lines split
+  // unevenly, 15 -> 386 rounds; session 54). A choice of order, never a decision: the
+  // output is the same.
   // Near-cospherical input whose tests only miss the filter (no exact tie) is not
   // switched: there index order is one random order among others, and measured no better.
   static constexpr std::int64_t kSosSample = 256;

@@ -16,18 +16,6 @@
 
 namespace gdel::test {
 
-inline void expect_exact_delaunay(const std::vector<double>& pts, const Triangulation& t, Backend b) {
-  auto r = verify(pts, t.tets, {}, b);
-  SCOPED_TRACE(r.summary());
-  SCOPED_TRACE(t.stats.to_string());
-  EXPECT_EQ(t.stats.algorithm, "gdel3d");
-  EXPECT_TRUE(r.delaunay());
-  EXPECT_EQ(r.non_delaunay_facets, 0);
-  EXPECT_EQ(r.degenerate_tets, 0);  // no flat tets in the output contract
-  EXPECT_TRUE(t.failed_vertices.empty());
-  expect_flip_output_valid(pts, t, b);  // structure and neighbour checks
-}
-
 inline void gdel3d_generator_cases(Backend b, std::size_t n) {
   using gen::Distribution;
   for (Distribution d : {Distribution::Uniform, Distribution::Gaussian, Distribution::ThinShell, Distribution::Grid,

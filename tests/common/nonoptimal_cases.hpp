@@ -83,9 +83,11 @@ inline void nonoptimal_reduces_cases(Backend b) {
 }
 
 // Algorithm::Auto: gdel3d with, on the CUDA backend, non-optimal flipping only when flipping
-// is stuck on fewer facets than 1 % of the points — on uniform points it runs, on the
-// exactly cospherical sphere (most facets are ties) it is skipped; on the CPU backend never;
-// the tets are gdel3d's either way.
+// is stuck on fewer facets than 1 % of the points — on uniform points it runs (0.1 %
+// stuck), on the exactly cospherical sphere inserted by centroids (most facets are ties;
+// 28 % stuck) it is skipped; on the CPU backend never; the tets are gdel3d's either way.
+// (The default insertion rule switches to SoS order on the sphere, where 0.3 % are left
+// stuck: bench/RESULTS.md, session 54.)
 inline void nonoptimal_auto_cases(Backend b) {
   for (auto d : {gen::Distribution::Uniform, gen::Distribution::Sphere}) {
     SCOPED_TRACE(std::string(gen::to_string(d)));
@@ -94,6 +96,7 @@ inline void nonoptimal_auto_cases(Backend b) {
     Options o;
     o.backend = b;
     o.canonical_order = true;
+    if (d == gen::Distribution::Sphere) o.insertion = InsertionRule::Centroid;
     Triangulation a = delaunay(pts, o);  // Algorithm::Auto
     SCOPED_TRACE(a.stats.to_string());
     expect_exact_delaunay(pts, a, b);
