@@ -1554,28 +1554,50 @@ PY
         --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
-  s53a)  # session 53: insertion in SoS order once exact ties dominate (GDEL_SOS_ORDER_SWITCH=0: never) and the
-          # final flip loop from the tail's tets (GDEL_FINAL_ALL_TETS=1: every tet, as before), one binary:
-          # gpu_gflip3d, gpu_gdel3d, alternating medians at 10^6 (uniform, grid, sphere) and 10^7, profiles;
-          # then session 52's pending A/B (next active set, reorder share) as far as the budget goes
+  s54a)  # session 54: one face byte per face (the neighbour's face and the face flags, one array where there
+          # were two) against session 53's binary (gdel-bench-old); and by their knobs on the new binary what
+          # session 53's plan s53a was to measure (never run; folded in here): insertion in SoS order
+          # (GDEL_SOS_ORDER_SWITCH=0: never) and the last flip loop from the tail's tets (GDEL_FINAL_ALL_TETS=1:
+          # from every tet). The GPU tests, alternating medians at 10^6 (uniform, grid, sphere) and 10^7,
+          # profiles, session 52's pending A/B (GDEL_ACTIVE_SLOTS, GDEL_REORDER_SHARE), then 10^8 for its peak
+          # bytes per point
     step gflip3d 200 "$tbin/gpu_gflip3d"
     step gdel3d 200 "$tbin/gpu_gdel3d"
+    step mesh 60 "$tbin/gpu_mesh"
     for r in 1 2; do
-      bench "s53a_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      GDEL_SOS_ORDER_SWITCH=0 GDEL_FINAL_ALL_TETS=1 bench "s53a_old$r" 60 --dist uniform,grid,sphere --n 1000000 \
+      bench "s54a_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench_old "s54a_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_SOS_ORDER_SWITCH=0 GDEL_FINAL_ALL_TETS=1 bench "s54a_s52$r" 60 --dist uniform,grid,sphere --n 1000000 \
         --methods gdel3d-cuda-dev --repeat 5
     done
-    GDEL_SOS_ORDER_SWITCH=0 bench s53a_noswitch 60 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    GDEL_FINAL_ALL_TETS=1 bench s53a_alltets 60 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    bench s53a_new7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    GDEL_FINAL_ALL_TETS=1 bench s53a_old7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    GDEL_PROFILE=1 bench s53a_profs 40 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 bench s53a_prof7 40 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_ACTIVE_SLOTS=1 bench s53a_slots 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    GDEL_ACTIVE_SLOTS=1 bench s53a_slots7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    for v in 8 4; do
-      GDEL_REORDER_SHARE=$v bench "s53a_share${v}_e7" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_SOS_ORDER_SWITCH=0 bench s54a_noswitch 60 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_FINAL_ALL_TETS=1 bench s54a_alltets 60 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    for r in 1 2; do
+      bench "s54a_new7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench_old "s54a_old7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     done
+    GDEL_FINAL_ALL_TETS=1 bench s54a_alltets7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s54a_profs 40 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s54a_prof7 40 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_ACTIVE_SLOTS=1 bench s54a_slots 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_ACTIVE_SLOTS=1 bench s54a_slots7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    for v in 8 4; do
+      GDEL_REORDER_SHARE=$v bench "s54a_share${v}_e7" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev \
+        --repeat 3
+    done
+    GDEL_PROFILE=1 bench s54a_e8 200 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s54b)  # session 54, second call: the tie count without flat tets' ties (skew lines no longer switch to SoS
+          # order) and the Auto test's sphere inserted by centroids: the GPU tests (GDel3DGpu.SkewLines timed
+          # there), then medians at 10^6 (uniform, grid, sphere) and 10^7; gdel-bench-old is s54a's binary
+    step gflip3d 200 "$tbin/gpu_gflip3d"
+    step gdel3d 240 "$tbin/gpu_gdel3d"
+    step mesh 60 "$tbin/gpu_mesh"
+    for r in 1 2; do
+      bench "s54b_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench_old "s54b_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    bench s54b_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
