@@ -131,7 +131,7 @@ alternate() {
 
 # The GPU test binaries present in the binaries' folder, a step each: gpu_tests
 gpu_tests() {
-  for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile; do
+  for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh; do
     if [ -x "$tbin/$t" ]; then step "$t" 200 "$tbin/$t"; fi
   done
 }
@@ -1394,7 +1394,7 @@ PY
   s48a)  # session 48: the scratch-free passes spread their items over the resident warps (par's scratch_kernel):
           # the GPU tests in the binaries' folder, then oldnew with gdel-bench-old a wrapper that runs the same
           # binary with GDEL_SPREAD_ITEMS=0 (the plain mapping, one item per thread)
-    for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile; do
+    for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh; do
       [ -x "$tbin/$t" ] && step "$t" 200 "$tbin/$t"
     done
     printf '#!/bin/sh\nGDEL_SPREAD_ITEMS=0 exec "$(dirname "$0")/gdel-bench" "$@"\n' >"$bin/gdel-bench-old"
@@ -1590,14 +1590,9 @@ PY
   s54b)  # session 54, second call: the tie count without flat tets' ties (skew lines no longer switch to SoS
           # order) and the Auto test's sphere inserted by centroids: the GPU tests (GDel3DGpu.SkewLines timed
           # there), then medians at 10^6 (uniform, grid, sphere) and 10^7; gdel-bench-old is s54a's binary
-    step gflip3d 200 "$tbin/gpu_gflip3d"
-    step gdel3d 240 "$tbin/gpu_gdel3d"
-    step mesh 60 "$tbin/gpu_mesh"
-    for r in 1 2; do
-      bench "s54b_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      bench_old "s54b_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
-    bench s54b_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    gpu_tests
+    alternate s54b --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ROUNDS=1 alternate s54b_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
