@@ -21,6 +21,7 @@
 #include "flip/flip_kernels.hpp"
 #include "flip/local_delaunay.hpp"
 #include "flip/sequential.hpp"
+#include "geometry/interior_point.hpp"
 #include "gdel/delaunay.hpp"
 #include "gdel/errors.hpp"
 #include "parallel/exact_batch.hpp"
@@ -637,54 +638,31 @@ class GFlip3D {
     int_all_ = quarter_points_ && geom::integer_point(k.data(), 0.0, geom::kQuarterScale);
   }
 
-  // K = a point strictly inside t0 (checked exactly); stored as point n. The centroid
-  // first (on integer input a multiple of 1/4, which keeps Geo::int_all). On a sliver
-  // the rounded centroid can miss the interior (found by a property test: (0,0,0),
-  // (0,0,2^-126), (0,1,0), (1,0,1), whose interior points need x and z below ~2^-70);
-  // then barycentric weights 2^-e_i, normalised, over a grid of exponents: very unequal
-  // weights put K near a vertex or an edge, where the spacing of doubles (finer near 0)
-  // can resolve the thickness. Each candidate's coordinates are summed in order of
-  // increasing weight (tiny contributions are not lost against larger ones where those
-  // are 0) and checked with exact orient3d. A tet whose interior holds no double at all
-  // (four points one ulp apart around (1,1,1)) still raises the error: documented in
-  // docs/gflip3d.md.
+  // K = a point strictly inside t0 (checked exactly), every coordinate in the predicates'
+  // exact range; stored as point n. The centroid first (on integer input a multiple of
+  // 1/4, which keeps Geo::int_all). On a sliver the rounded centroid can miss the interior
+  // (property tests found (0,0,0), (0,0,2^-126), (0,1,0), (1,0,1), whose interior points
+  // need x and z below ~2^-70, and (0,0,1), (0,1,0), (0,1,-2^-126), (1,0,0)); then
+  // geom::interior_point searches the doubles coordinate by coordinate with exact
+  // predicates. A tet whose interior holds no double at all (four points one ulp apart
+  // around (1,1,1)) still raises the error: documented in docs/gflip3d.md.
   void set_kernel_point(const vid_t t[4]) {
     std::vector<std::vector<double>> p;
     for (int k = 0; k < 4; ++k) p.push_back(host_point(t[k]));
+    const double* pp[4] = {p[0].data(), p[1].data(), p[2].data(), p[3].data()};
     std::vector<double> work(geom::kPredicateWork);
-    auto try_weights = [&](const double (&w)[4]) {
-      int order[4] = {0, 1, 2, 3};
-      std::sort(order, order + 4, [&](int a, int b) { return w[a] < w[b]; });
-      double k[3];
-      for (int a = 0; a < 3; ++a) {
-        k[a] = 0;
-        for (int i : order) k[a] += w[i] * p[i][a];
-      }
-      for (int i = 0; i < 4; ++i)
-        if (geom::orient3d_exact(p[face_vertex(i, 0)].data(), p[face_vertex(i, 1)].data(),
-                                 p[face_vertex(i, 2)].data(), k, work.data()) <= 0)
-          return false;
-      xyz_.set(static_cast<std::size_t>(3 * n_), k[0]);
-      xyz_.set(static_cast<std::size_t>(3 * n_ + 1), k[1]);
-      xyz_.set(static_cast<std::size_t>(3 * n_ + 2), k[2]);
-      update_int_all();
-      return true;
-    };
-    if (try_weights({.25, .25, .25, .25})) return;
-    static constexpr int kExp[] = {0, 1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1000};
-    constexpr int ne = static_cast<int>(sizeof(kExp) / sizeof(kExp[0]));
-    for (int i0 = 0; i0 < ne; ++i0)
-      for (int i1 = 0; i1 < ne; ++i1)
-        for (int i2 = 0; i2 < ne; ++i2)
-          for (int i3 = 0; i3 < ne; ++i3) {
-            if (std::min({i0, i1, i2, i3}) != 0) continue;  // the largest weight is 2^0 (scale-free)
-            double w[4] = {std::ldexp(1.0, -kExp[i0]), std::ldexp(1.0, -kExp[i1]), std::ldexp(1.0, -kExp[i2]),
-                           std::ldexp(1.0, -kExp[i3])};
-            const double sum = w[0] + w[1] + w[2] + w[3];
-            for (double& x : w) x /= sum;
-            if (try_weights(w)) return;
-          }
-    throw Error("gflip3d: no interior point of the first tetrahedron is representable (tetrahedron too thin)");
+    double k[3];
+    for (int a = 0; a < 3; ++a) k[a] = .25 * pp[0][a] + .25 * pp[1][a] + .25 * pp[2][a] + .25 * pp[3][a];
+    bool ok = true;
+    for (int a = 0; a < 3; ++a) ok = ok && geom::coordinate_in_range(k[a]);
+    for (int i = 0; i < 4 && ok; ++i)
+      ok = geom::orient3d(pp[face_vertex(i, 0)], pp[face_vertex(i, 1)], pp[face_vertex(i, 2)], k, work.data()) > 0;
+    if (!ok && !geom::interior_point(pp, k))
+      throw Error("gflip3d: no interior point of the first tetrahedron is representable (tetrahedron too thin)");
+    xyz_.set(static_cast<std::size_t>(3 * n_), k[0]);
+    xyz_.set(static_cast<std::size_t>(3 * n_ + 1), k[1]);
+    xyz_.set(static_cast<std::size_t>(3 * n_ + 2), k[2]);
+    update_int_all();
   }
 
   // --- insertion in SoS order ---------------------------------------------------------

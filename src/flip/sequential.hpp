@@ -112,8 +112,8 @@ class SequentialInsertion {
       const bool alive = mv.alive(static_cast<tid_t>(t));
       for (int i = 0; i < 4; ++i) {
         c.v[i] = alive ? mv.tet[t].v[i] : kNoVertex;
-        const tid_t u = mv.opp_t[4 * t + i];
-        c.n[i] = !alive || u < 0 ? -1 : (u << 2 | (mv.face[4 * t + i] & mesh::MeshView::kFaceMask));
+        // Cells hold 32-bit packed facets: fits() keeps the mesh below kMaxTets = 2^29 tets.
+        c.n[i] = alive ? static_cast<std::int32_t>(mv.opp(4 * t + i)) : -1;
       }
       if (!alive) workers_[0].free_.push_back(static_cast<tid_t>(t));
     }
@@ -170,8 +170,7 @@ class SequentialInsertion {
       const std::int64_t d = sl[t];
       for (int i = 0; i < 4; ++i) {
         mv.tet[d].v[i] = c.v[i];
-        mv.opp_t[4 * d + i] = c.n[i] >= 0 ? sl[tet_of(c.n[i])] : kNoTet;
-        mv.face[4 * d + i] = mesh::MeshView::face_byte(c.n[i] >= 0 ? face_of(c.n[i]) : 0, 0);
+        mv.set_opp_flags(4 * d + i, c.n[i] >= 0 ? pack_facet(sl[tet_of(c.n[i])], face_of(c.n[i])) : fid_t(-1), 0);
       }
       mv.state[d] = mesh::kAlive;
     });

@@ -654,7 +654,7 @@ GDEL_HD inline int lifted_minor_filter(const double* const* p, const double* w, 
     case 2: return detail::det_ones_filter<2>(R, rows, cols);
     case 3: return detail::det_ones_filter<3>(R, rows, cols);
     case 4: {
-      const int s = power_filter(p[0], p[1], p[2], p[3], p[4], R.w[0], R.w[1], R.w[2], R.w[3], R.w[4]);
+      const int s = power_filter(R.p[0], R.p[1], R.p[2], R.p[3], R.p[4], R.w[0], R.w[1], R.w[2], R.w[3], R.w[4]);
       return s == kUncertain ? s : -s;
     }
     default: return kUncertain;

@@ -162,6 +162,12 @@ inline void gflip_degenerate_cases(Backend b) {
   Triangulation ts = delaunay(sliver, o);
   expect_flip_output_valid(sliver, ts, b);
   EXPECT_EQ(ts.num_tets(), 1);
+  // a second one (property test, session 54): its interior doubles lie next to the short
+  // edge, (2^-53 - 2^-106, 1 - 2^-53, 2^-106 - 2^-140) for one
+  const std::vector<double> sliver2 = {0, 0, 1, 0, 1, 0, 0, 1, -e, 1, 0, 0};
+  Triangulation ts2 = delaunay(sliver2, o);
+  expect_flip_output_valid(sliver2, ts2, b);
+  EXPECT_EQ(ts2.num_tets(), 1);
   // four points one ulp apart around (1,1,1): no double lies strictly inside their
   // tetrahedron, so there is no kernel point: a clear error, not a wrong answer
   const double u = std::ldexp(1.0, -52);

@@ -1,6 +1,7 @@
 // Tests of src/geometry: expansion arithmetic, filter constants, the exact predicates
 // against GMP on random / near-degenerate / degenerate inputs, simulation of simplicity
-// (both perturbations) against brute-force GMP evaluations, and contraction regressions.
+// (both perturbations) against brute-force GMP evaluations, contraction regressions, and
+// the search for a double point inside a tetrahedron (interior_point) against GMP.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -16,6 +17,7 @@
 #include "cpu/predicates_oracle.hpp"
 #include "geometry/expansion.hpp"
 #include "geometry/filters_simd.hpp"
+#include "geometry/interior_point.hpp"
 #include "geometry/predicates.hpp"
 
 using namespace gdel::geom;
@@ -1049,4 +1051,120 @@ TEST(Contraction, Orient3dExactWhereContractedDeterminantFails) {
   const double* p[5] = {a, b, c, d, e};
   o.load(5, p, nullptr);
   EXPECT_EQ(insphere(a, b, c, d, e, w.data()), o.lifted());
+}
+
+// ---------------------------------------------------------------------------------------
+// interior_point: a double point strictly inside a tetrahedron (gFlip3D's kernel point)
+// ---------------------------------------------------------------------------------------
+namespace {
+
+// GMP: is q strictly inside the positive tet p (every face's orient3d with q in place of
+// its opposite vertex > 0)?
+bool oracle_inside(const double* const p[4], const double* q) {
+  for (int i = 0; i < 4; ++i) {
+    const double* r[5] = {p[0], p[1], p[2], p[3], nullptr};
+    r[i] = q;
+    Oracle o;
+    o.load(4, r, nullptr);
+    if (o.orient3d() <= 0) return false;
+  }
+  return true;
+}
+int oracle_orient(const double* const p[4]) {
+  const double* r[5] = {p[0], p[1], p[2], p[3], nullptr};
+  Oracle o;
+  o.load(4, r, nullptr);
+  return o.orient3d();
+}
+// The search's answer, checked: a point it returns is inside (GMP) and in the exact range.
+bool checked_interior_point(const double* const p[4]) {
+  double k[3];
+  if (!interior_point(p, k)) return false;
+  for (double x : k) EXPECT_TRUE(coordinate_in_range(x)) << x;
+  EXPECT_TRUE(oracle_inside(p, k)) << k[0] << " " << k[1] << " " << k[2];
+  return true;
+}
+
+}  // namespace
+
+TEST(InteriorPoint, SliversFromPropertyTestsAndATetWithoutInteriorDoubles) {
+  const double e = std::ldexp(1.0, -126);
+  // the two slivers whose rounded centroids miss their interiors (found by
+  // tests/python/test_properties.py, sessions 39 and 54), in positive order
+  const double a0[3] = {0, 0, 0}, a1[3] = {0, 0, e}, a2[3] = {0, 1, 0}, a3[3] = {1, 0, 1};
+  const double b0[3] = {0, 0, 1}, b1[3] = {0, 1, 0}, b2[3] = {0, 1, -e}, b3[3] = {1, 0, 0};
+  for (auto t : {std::array<const double*, 4>{a0, a1, a2, a3}, std::array<const double*, 4>{b0, b1, b2, b3}}) {
+    if (oracle_orient(t.data()) < 0) std::swap(t[2], t[3]);
+    ASSERT_GT(oracle_orient(t.data()), 0);
+    double c[3];
+    for (int d = 0; d < 3; ++d) c[d] = .25 * t[0][d] + .25 * t[1][d] + .25 * t[2][d] + .25 * t[3][d];
+    EXPECT_FALSE(oracle_inside(t.data(), c));  // why the search exists
+    EXPECT_TRUE(checked_interior_point(t.data()));
+  }
+  // four points one ulp apart around (1,1,1): no double inside
+  const double u = std::ldexp(1.0, -52);
+  const double c0[3] = {1, 1, 1}, c1[3] = {1 + u, 1, 1}, c2[3] = {1, 1 + u, 1}, c3[3] = {1, 1, 1 + u};
+  const double* c[4] = {c0, c1, c2, c3};
+  ASSERT_GT(oracle_orient(c), 0);
+  EXPECT_FALSE(checked_interior_point(c));
+}
+
+TEST(InteriorPoint, FindsADoubleWheneverTheLatticeHasOne) {
+  // Vertices on the lattice 1 + i 2^-52, i = 0..6, per coordinate: every double of that box
+  // is a lattice point, so brute force over the 343 of them says whether any double lies
+  // inside; the search must find one exactly when one exists.
+  Generator g(2026);
+  const double u = std::ldexp(1.0, -52);
+  auto lattice = [&](int i) { return 1 + i * u; };
+  int with = 0, without = 0;
+  for (int trial = 0; trial < 250; ++trial) {
+    double v[4][3];
+    for (auto& x : v)
+      for (double& y : x) y = lattice(g.integer(0, 6));
+    const double* p[4] = {v[0], v[1], v[2], v[3]};
+    const int o = oracle_orient(p);
+    if (o == 0) continue;
+    if (o < 0) std::swap(p[2], p[3]);
+    bool any = false;
+    for (int i = 0; i < 7 && !any; ++i)
+      for (int j = 0; j < 7 && !any; ++j)
+        for (int k = 0; k < 7 && !any; ++k) {
+          const double q[3] = {lattice(i), lattice(j), lattice(k)};
+          any = oracle_inside(p, q);
+        }
+    EXPECT_EQ(checked_interior_point(p), any) << "trial " << trial;
+    (any ? with : without)++;
+  }
+  EXPECT_GT(with, 20);
+  EXPECT_GT(without, 20);
+  std::printf("[interior_point] lattice tets: %d with a double inside (all found), %d without\n", with, without);
+}
+
+TEST(InteriorPoint, RandomSliversAcrossScales) {
+  // A triangle and a fourth point lifted off its plane by 2^-k, k = 10..140, in a random
+  // direction: every answer is checked with GMP; slivers thicker than the doubles' spacing
+  // near a vertex must be found.
+  Generator g(7);
+  int found = 0, total = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    double v[4][3];
+    for (int i = 0; i < 3; ++i)
+      for (double& y : v[i]) y = g.uniform(-1, 1);
+    const double s = g.uniform(0.1, 0.8), t = g.uniform(0.1, 0.8) * (1 - s);
+    const int k = g.integer(10, 140);
+    for (int d = 0; d < 3; ++d)
+      v[3][d] = v[0][d] + s * (v[1][d] - v[0][d]) + t * (v[2][d] - v[0][d]) + std::ldexp(g.uniform(-1, 1), -k);
+    const double* p[4] = {v[0], v[1], v[2], v[3]};
+    const int o = oracle_orient(p);
+    if (o == 0) continue;
+    if (o < 0) std::swap(p[2], p[3]);
+    ++total;
+    const bool f = checked_interior_point(p);
+    found += f;
+    if (k <= 40) {
+      EXPECT_TRUE(f) << "trial " << trial << " k " << k;
+    }
+  }
+  EXPECT_GT(found, total / 2);
+  std::printf("[interior_point] random slivers: %d of %d with a point found\n", found, total);
 }

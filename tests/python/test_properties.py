@@ -152,25 +152,15 @@ def test_float32_sets_with_duplicates(base, dup):
         with pytest.raises(gdel.DegenerateInputError):
             gdel.Delaunay(p)
         return
-    try:
-        tri = gdel.Delaunay(p)
-    except gdel.GdelError as e:
-        # the documented limit (docs/gflip3d.md, first tetrahedron): a first tetrahedron so
-        # thin that the kernel point's search finds no double inside it; any other error fails
-        if "tetrahedron too thin" not in str(e):
-            raise
-        return
+    tri = gdel.Delaunay(p)
     _assert_full_contract(p.astype(np.float64), tri, "gdel3d")
     assert (tri.vertex_to_simplex[tri.representative != np.arange(len(p))] == -1).all()
 
 
 # Found by test_float32_sets_with_duplicates (2026-12-05): a sliver with a short edge of
 # length 2^-126 whose interior holds doubles (e.g. (2^-53 - 2^-106, 1 - 2^-53, 2^-106 -
-# 2^-140)) that the kernel point's search (weights 2^-e) misses: "tetrahedron too thin".
-# A known limit, kept here so that it shows: strict, so a fix makes this test fail until
-# the mark goes.
-@pytest.mark.xfail(raises=gdel.GdelError, strict=True,
-                   reason="the kernel point's search misses a thin first tet's interior")
+# 2^-140)) that the kernel point's first search (weights 2^-e) missed ("tetrahedron too
+# thin"); geom::interior_point (a coordinate-by-coordinate search) finds one.
 def test_thin_first_tetrahedron_with_interior_doubles():
     p = np.array([(0.0, 0.0, 1.0), (0.0, 1.0, 0.0), (0.0, 1.0, -1.1754943508222875e-38), (1.0, 0.0, 0.0)])
     assert orient_exact(*p) != 0
