@@ -1594,6 +1594,19 @@ PY
     alternate s54b --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ROUNDS=1 alternate s54b_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
+  s55a)  # session 55: the binary with geom::interior_point (and session 54's face bytes and tie fix):
+          # the GPU tests, new-vs-old medians (gdel-bench-old = s54a's binary) at 10^6 (uniform, grid,
+          # sphere) and 10^7, then GDEL_REORDER_SHARE=8 against the default, two rounds
+    gpu_tests
+    alternate s55a --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ROUNDS=1 alternate s55a_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    for r in 1 2; do
+      GDEL_REORDER_SHARE=8 bench "s55a_rs8_$r" 60 --dist uniform,grid,sphere --n 1000000 \
+        --methods gdel3d-cuda-dev --repeat 5
+      GDEL_REORDER_SHARE=8 bench "s55a_rs8_e7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s55a_def_e7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -89,6 +89,9 @@ bool last_true(double lo, double hi, Pred pred, double& out) {
 // p[0..3] with orient3d(p0, p1, p2, p3) > 0, coordinates in the exact range. Writes k and
 // returns true when the search finds a double point strictly inside (checked exactly).
 inline bool interior_point(const double* const p[4], double k[3]) {
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d)
+      if (!coordinate_in_range(p[i][d])) return false;  // (the bisections' numbering needs it)
   std::vector<double> work(kPredicateWork);
   double* w = work.data();
   // Face i's test with q in place of vertex i: > 0 iff q lies on p_i's side of the face.

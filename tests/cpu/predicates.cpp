@@ -1107,6 +1107,11 @@ TEST(InteriorPoint, SliversFromPropertyTestsAndATetWithoutInteriorDoubles) {
   const double* c[4] = {c0, c1, c2, c3};
   ASSERT_GT(oracle_orient(c), 0);
   EXPECT_FALSE(checked_interior_point(c));
+  // outside the exact range (a subnormal coordinate): refused, not searched
+  const double d0[3] = {0, 0, 0}, d1[3] = {1, 0, 0}, d2[3] = {0, 1, 0}, d3[3] = {0, 0, std::ldexp(1.0, -1070)};
+  const double* d[4] = {d0, d1, d2, d3};
+  double k[3];
+  EXPECT_FALSE(interior_point(d, k));
 }
 
 TEST(InteriorPoint, FindsADoubleWheneverTheLatticeHasOne) {
