@@ -1607,6 +1607,10 @@ PY
       bench "s55a_def_e7_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     done
     ;;
+  s55b)  # session 55, second call: the gFlip3D test binary of the final source (interior_point's range
+          # guard, the wedge without an interior double): the whole gpu_gflip3d
+    step gpu_gflip3d 200 "$tbin/gpu_gflip3d"
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
