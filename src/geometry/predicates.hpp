@@ -538,6 +538,85 @@ GDEL_HD int orient3d_sos(const double* a, const double* b, const double* c,
   return (swaps & 1) ? v : detail::negate_sign(v);    // orient3d = -det4(original)
 }
 
+// orient3d(p0, p1, p2, p3) with the point at position kpos replaced by the exact centroid
+// K = (q0 + q1 + q2 + q3) / 4 of four points, which need not be a double: a kernel point
+// for a first tetrahedron that holds no double (docs/gflip3d.md). K is perturbed as in
+// orient3d_sos, as a point of index ids[kpos]. The determinant is linear in K's row
+// (K, 1) = sum_i (q_i, 1) / 4, so its value and every SoS minor with K's row are sums of
+// the four with q_i in K's place: each evaluated exactly, summed as expansions. Never 0.
+// p[kpos] is not read. Work: kPredicateWork doubles (a scratch is required). Not yet used
+// by gFlip3D (its kernel point is a double; the wiring is the next step).
+namespace detail {
+// Sign of sum_i det[(q, 1)] over the rows rr[0..k] and columns cc[0..k) with sorted row kr
+// replaced by q_i.
+template <int K>
+GDEL_HD int centroid_minor_sign(const LiftedRows& R, const int* rr, const int* cc, int kr, const double* const* q,
+                                double* work) {
+  constexpr int cap = 4 * det_len(K, 1);
+  double* acc = work;
+  double* next = acc + cap;
+  double* term = next + cap;  // det_work(K, 1) doubles
+  int len = 0;
+  for (int i = 0; i < 4; ++i) {
+    LiftedRows Ri = R;
+    Ri.p[kr] = q[i];
+    const int tl = det_ones_exact<K>(Ri, rr, cc, false, term);
+    len = ex::sum(len, acc, tl, term, next);
+    double* t = acc;
+    acc = next;
+    next = t;
+  }
+  return ex::sign(len, acc);
+}
+static_assert(8 * det_len(3, 1) + det_work(3, 1) <= static_cast<int>(kPredicateWork));
+
+struct CentroidMinor {
+  const LiftedRows& R;
+  int kr;
+  const double* const* q;
+  double* work;
+  GDEL_HD int operator()(unsigned rows, unsigned cols) const {
+    int rr[5], k = 0;
+    for (int r = 0; r < 4; ++r)
+      if (rows >> r & 1u) rr[k++] = r;
+    if (!(rows >> kr & 1u)) return minor_sign(R, rr, cols, false, work);
+    int cc[4];
+    switch (mask_columns(cols, cc)) {
+      case 1: return centroid_minor_sign<1>(R, rr, cc, kr, q, work);
+      case 2: return centroid_minor_sign<2>(R, rr, cc, kr, q, work);
+      default: return centroid_minor_sign<3>(R, rr, cc, kr, q, work);
+    }
+  }
+};
+}  // namespace detail
+
+GDEL_HD inline int orient3d_centroid_sos(const double* const p[4], int kpos, const double* const q[4],
+                                         const std::int64_t ids[4], double* work) {
+  // filter: the four terms' filters agree on a sign
+  int agree = 0;
+  for (int i = 0; i < 4 && agree != kUncertain; ++i) {
+    const double* r[4] = {p[0], p[1], p[2], p[3]};
+    r[kpos] = q[i];
+    const int f = orient3d_filter(r[0], r[1], r[2], r[3]);
+    agree = (f == kUncertain || f == 0 || (agree != 0 && f != agree)) ? kUncertain : f;
+  }
+  if (agree != kUncertain) return agree;
+  const double* pp[4] = {p[0], p[1], p[2], p[3]};
+  pp[kpos] = q[0];  // (a placeholder: the sorted row of K is replaced in every minor)
+  detail::LiftedRows R;
+  const int swaps = detail::sorted_rows<4>(pp, nullptr, ids, false, R);
+  int kr = 0;  // K's sorted row: its index's rank
+  for (int i = 0; i < 4; ++i) kr += ids[i] < ids[kpos];
+  const int rr[4] = {0, 1, 2, 3};
+  const int cc[3] = {0, 1, 2};
+  int v = detail::centroid_minor_sign<3>(R, rr, cc, kr, q, work);  // the exact value (raw, sorted rows)
+  if (v == 0) {
+    detail::CentroidMinor minor{R, kr, q, work};
+    v = detail::sos_table_walk(false, minor);  // perturbed det4 of sorted rows
+  }
+  return (swaps & 1) ? v : detail::negate_sign(v);  // orient3d = -det4(original)
+}
+
 // ---------------------------------------------------------------------------------------
 // insphere
 // ---------------------------------------------------------------------------------------
