@@ -1611,6 +1611,9 @@ PY
           # guard, the wedge without an interior double): the whole gpu_gflip3d
     step gpu_gflip3d 200 "$tbin/gpu_gflip3d"
     ;;
+  s55c)  # session 55, third call: gpu_predicates with orient3d_centroid_sos against GMP on the device
+    step gpu_predicates 200 "$tbin/gpu_predicates"
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -1177,79 +1177,21 @@ TEST(InteriorPoint, RandomSliversAcrossScales) {
 // ---------------------------------------------------------------------------------------
 // orient3d_centroid_sos: orient3d with one point the exact centroid of four others
 // ---------------------------------------------------------------------------------------
-namespace {
-
-// GMP: the perturbed orient3d of p with p[kpos] := (q0 + q1 + q2 + q3) / 4 exactly. All
-// rows are scaled by 2^(s+2), K's row as the sum of the q_i scaled by 2^s (an integer).
-int oracle_centroid_orient(const double* const p[4], int kpos, const double* const q[4], const std::int64_t* ids,
-                           bool& tie) {
-  int s = 0;
-  auto widen = [&](const double* x) {
-    for (int c = 0; c < 3; ++c)
-      if (x[c] != 0.0) s = std::max(s, -gdel_test::low_exp(x[c]));
-  };
-  for (int i = 0; i < 4; ++i) {
-    if (i != kpos) widen(p[i]);
-    widen(q[i]);
-  }
-  Oracle o;
-  const double* r[5] = {p[0], p[1], p[2], p[3], nullptr};
-  r[kpos] = q[0];
-  o.load(4, r, nullptr);
-  for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c) {
-      if (i != kpos) {
-        o.X[i][c] = gdel_test::scaled(p[i][c], s + 2);
-      } else {
-        o.X[i][c] = 0;
-        for (int j = 0; j < 4; ++j) o.X[i][c] += gdel_test::scaled(q[j][c], s);
-      }
-    }
-  const int v = o.orient3d();
-  tie = v == 0;
-  return v != 0 ? v : o.em_sos(4, ids);
-}
-
-}  // namespace
-
 TEST(Predicates, Orient3dWithAnExactCentroidMatchesGmp) {
-  // The centroids have coordinates that are not doubles (the q's carry bits 2^-60 apart),
-  // and half of the cases put K exactly on the plane of the other three (z = K's z, a
-  // double), so the perturbation decides: each checked against the brute-force E-M sign.
-  Generator g(55);
+  // gdel_test::centroid_cases: centroids off the doubles, half of them exactly on the
+  // plane of the other three points (the perturbation decides), each with GMP's sign
   std::vector<double> w(kPredicateWork);
   int ties = 0, off_grid = 0;
-  for (int t = 0; t < 4000; ++t) {
-    double qv[4][3], pv[4][3];
-    int isum = 0, ksum = 0;
-    for (auto& x : qv) {
-      const int ii = g.integer(-8, 8), kk = g.integer(0, 3);
-      isum += ii, ksum += kk;
-      x[0] = ii + std::ldexp(static_cast<double>(kk), -60);
-      x[1] = g.uniform(-1, 1);
-      x[2] = g.integer(-8, 8);  // K's z = sum / 4: a double
-    }
-    const double kz = (qv[0][2] + qv[1][2] + qv[2][2] + qv[3][2]) / 4;
-    const bool flat = t % 2 == 0;
-    for (auto& x : pv) {
-      x[0] = g.integer(-4, 4) * (t % 3 == 0 ? 1.0 : g.uniform(0.5, 1));
-      x[1] = t % 5 == 0 ? qv[0][1] : g.uniform(-1, 1);
-      x[2] = flat ? kz : g.integer(-8, 8);
-    }
-    const int kpos = g.integer(0, 3);
-    const double* p[4] = {pv[0], pv[1], pv[2], pv[3]};
-    const double* q[4] = {qv[0], qv[1], qv[2], qv[3]};
-    Case ids_case;
-    g.ids(ids_case);
-    const std::int64_t ids[4] = {ids_case.id[0], ids_case.id[1], ids_case.id[2], ids_case.id[3]};
-    const int got = orient3d_centroid_sos(p, kpos, q, ids, w.data());
-    bool tie = false;
-    const int want = oracle_centroid_orient(p, kpos, q, ids, tie);
-    ASSERT_EQ(got, want) << "case " << t << " kpos " << kpos;
+  const std::vector<gdel_test::CentroidCase> cases = gdel_test::centroid_cases(4000, 55);
+  for (std::size_t t = 0; t < cases.size(); ++t) {
+    const gdel_test::CentroidCase& c = cases[t];
+    const double* p[4] = {c.p[0], c.p[1], c.p[2], c.p[3]};
+    const double* q[4] = {c.q[0], c.q[1], c.q[2], c.q[3]};
+    const int got = orient3d_centroid_sos(p, c.kpos, q, c.id, w.data());
+    ASSERT_EQ(got, c.want) << "case " << t << " kpos " << c.kpos;
     ASSERT_NE(got, 0);
-    ties += tie;
-    // K's x = (isum + ksum 2^-60) / 4 spans more than 53 bits: not a double
-    off_grid += isum != 0 && ksum != 0;
+    ties += c.tie;
+    off_grid += c.off_grid;
   }
   EXPECT_GT(ties, 1000);  // the perturbation decided these
   EXPECT_GT(off_grid, 1000);

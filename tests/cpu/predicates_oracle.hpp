@@ -523,4 +523,81 @@ class Generator {
   std::mt19937_64 rng_;
 };
 
+
+// ---------------------------------------------------------------------------------------
+// orient3d_centroid_sos's cases: orient3d of p with p[kpos] the exact centroid of q[0..3]
+// ---------------------------------------------------------------------------------------
+struct CentroidCase {
+  double p[4][3];
+  double q[4][3];
+  int kpos;
+  std::int64_t id[4];
+  int want;       // GMP: the perturbed sign
+  bool tie;       // the unperturbed value is 0
+  bool off_grid;  // the centroid is not a double
+};
+
+// GMP: the perturbed orient3d of p with p[kpos] := (q0 + q1 + q2 + q3) / 4 exactly. All
+// rows are scaled by 2^(s+2), K's row as the sum of the q_i scaled by 2^s (an integer).
+inline int oracle_centroid_orient(const CentroidCase& k, bool& tie) {
+  int s = 0;
+  auto widen = [&](const double* x) {
+    for (int c = 0; c < 3; ++c)
+      if (x[c] != 0.0) s = std::max(s, -low_exp(x[c]));
+  };
+  for (int i = 0; i < 4; ++i) {
+    if (i != k.kpos) widen(k.p[i]);
+    widen(k.q[i]);
+  }
+  Oracle o;
+  const double* r[5] = {k.p[0], k.p[1], k.p[2], k.p[3], nullptr};
+  r[k.kpos] = k.q[0];
+  o.load(4, r, nullptr);
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < 3; ++c) {
+      if (i != k.kpos) {
+        o.X[i][c] = scaled(k.p[i][c], s + 2);
+      } else {
+        o.X[i][c] = 0;
+        for (int j = 0; j < 4; ++j) o.X[i][c] += scaled(k.q[j][c], s);
+      }
+    }
+  const int v = o.orient3d();
+  tie = v == 0;
+  return v != 0 ? v : o.em_sos(4, k.id);
+}
+
+// The q's x carries bits 2^-60 below small integers (the centroid is then not a double),
+// and every second case puts p's other three points on the plane z = K's z (a double):
+// exact ties that the perturbation decides.
+inline std::vector<CentroidCase> centroid_cases(int n, std::uint64_t seed) {
+  Generator g(seed);
+  std::vector<CentroidCase> out(static_cast<std::size_t>(n));
+  for (int t = 0; t < n; ++t) {
+    CentroidCase& k = out[static_cast<std::size_t>(t)];
+    int isum = 0, ksum = 0;
+    for (auto& x : k.q) {
+      const int ii = g.integer(-8, 8), kk = g.integer(0, 3);
+      isum += ii, ksum += kk;
+      x[0] = ii + std::ldexp(static_cast<double>(kk), -60);
+      x[1] = g.uniform(-1, 1);
+      x[2] = g.integer(-8, 8);
+    }
+    const double kz = (k.q[0][2] + k.q[1][2] + k.q[2][2] + k.q[3][2]) / 4;
+    const bool flat = t % 2 == 0;
+    for (auto& x : k.p) {
+      x[0] = g.integer(-4, 4) * (t % 3 == 0 ? 1.0 : g.uniform(0.5, 1));
+      x[1] = t % 5 == 0 ? k.q[0][1] : g.uniform(-1, 1);
+      x[2] = flat ? kz : g.integer(-8, 8);
+    }
+    k.kpos = g.integer(0, 3);
+    Case ids;
+    g.ids(ids);
+    for (int i = 0; i < 4; ++i) k.id[i] = ids.id[i];
+    k.off_grid = isum != 0 && ksum != 0;  // (isum + ksum 2^-60) / 4 spans more than 53 bits
+    k.want = oracle_centroid_orient(k, k.tie);
+  }
+  return out;
+}
+
 }  // namespace gdel_test
