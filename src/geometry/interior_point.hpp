@@ -115,7 +115,7 @@ inline bool interior_point(const double* const p[4], double k[3]) {
     }
     auto strictly_between = [](double x, double l, double h) { return l < x && x < h; };
     auto add_candidate = [&](std::vector<double>& v, double x, double l, double h) {
-      if (strictly_between(x, l, h)) v.push_back(x);
+      if (strictly_between(x, l, h) && coordinate_in_range(x)) v.push_back(x);
     };
     auto middle = [](double l, double h) { return l / 2 + h / 2; };  // no overflow
     // The sign of face i's linear function's slope along c (its value at q is face_sign):
@@ -179,7 +179,7 @@ inline bool interior_point(const double* const p[4], double k[3]) {
       sb.erase(std::unique(sb.begin(), sb.end()), sb.end());
 
       for (const double t : sb) {
-        if (t < tlo || t > thi) continue;
+        if (t < tlo || t > thi || !coordinate_in_range(t)) continue;  // (a middle can fall below 2^-152)
         q[b] = t;
         auto above_lower = [&](double x) {
           q[c] = x;
