@@ -639,25 +639,19 @@ class GFlip3D {
   }
 
   // K = a point strictly inside t0 (checked exactly), every coordinate in the predicates'
-  // exact range; stored as point n. The centroid first (on integer input a multiple of
-  // 1/4, which keeps Geo::int_all). On a sliver the rounded centroid can miss the interior
-  // (property tests found (0,0,0), (0,0,2^-126), (0,1,0), (1,0,1), whose interior points
-  // need x and z below ~2^-70, and (0,0,1), (0,1,0), (0,1,-2^-126), (1,0,0)); then
-  // geom::interior_point searches the doubles coordinate by coordinate with exact
-  // predicates. A tet whose interior holds no double at all (four points one ulp apart
-  // around (1,1,1)) still raises the error: documented in docs/gflip3d.md.
+  // exact range; stored as point n: geom::interior_point, the rounded centroid first (on
+  // integer input a multiple of 1/4, which keeps Geo::int_all), then on a sliver a search
+  // of the doubles coordinate by coordinate with exact predicates (property tests found
+  // (0,0,0), (0,0,2^-126), (0,1,0), (1,0,1), whose interior points need x and z below
+  // ~2^-70, and (0,0,1), (0,1,0), (0,1,-2^-126), (1,0,0)). A tet whose interior holds no
+  // double at all (four points one ulp apart around (1,1,1)) raises the error:
+  // documented in docs/gflip3d.md.
   void set_kernel_point(const vid_t t[4]) {
     std::vector<std::vector<double>> p;
     for (int k = 0; k < 4; ++k) p.push_back(host_point(t[k]));
     const double* pp[4] = {p[0].data(), p[1].data(), p[2].data(), p[3].data()};
-    std::vector<double> work(geom::kPredicateWork);
     double k[3];
-    for (int a = 0; a < 3; ++a) k[a] = .25 * pp[0][a] + .25 * pp[1][a] + .25 * pp[2][a] + .25 * pp[3][a];
-    bool ok = true;
-    for (int a = 0; a < 3; ++a) ok = ok && geom::coordinate_in_range(k[a]);
-    for (int i = 0; i < 4 && ok; ++i)
-      ok = geom::orient3d(pp[face_vertex(i, 0)], pp[face_vertex(i, 1)], pp[face_vertex(i, 2)], k, work.data()) > 0;
-    if (!ok && !geom::interior_point(pp, k))
+    if (!geom::interior_point(pp, k))
       throw Error("gflip3d: no interior point of the first tetrahedron is representable (tetrahedron too thin)");
     xyz_.set(static_cast<std::size_t>(3 * n_), k[0]);
     xyz_.set(static_cast<std::size_t>(3 * n_ + 1), k[1]);

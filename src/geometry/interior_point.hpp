@@ -2,7 +2,10 @@
 // predicates only (host code). gFlip3D stores one inside its first tetrahedron as the
 // kernel point that stands for the point at infinity (docs/gflip3d.md, first tetrahedron).
 //
-// The search fixes one coordinate at a time, over the six axis orders (a, b, c):
+// The rounded centroid first (.25 p0 + .25 p1 + .25 p2 + .25 p3: on integer input a
+// multiple of 1/4, which keeps gFlip3D's integer stage for it). Where that misses the
+// interior (a sliver), a search fixes one coordinate at a time, over the six axis orders
+// (a, b, c):
 //  * a: the doubles next to each vertex's a-coordinate (two on each side) and the middle
 //    of the a-range. Doubles are densest near the vertices' coordinates (and near 0),
 //    where a sliver's cross-section still holds some.
@@ -89,9 +92,6 @@ bool last_true(double lo, double hi, Pred pred, double& out) {
 // p[0..3] with orient3d(p0, p1, p2, p3) > 0, coordinates in the exact range. Writes k and
 // returns true when the search finds a double point strictly inside (checked exactly).
 inline bool interior_point(const double* const p[4], double k[3]) {
-  for (int i = 0; i < 4; ++i)
-    for (int d = 0; d < 3; ++d)
-      if (!coordinate_in_range(p[i][d])) return false;  // (the bisections' numbering needs it)
   std::vector<double> work(kPredicateWork);
   double* w = work.data();
   // Face i's test with q in place of vertex i: > 0 iff q lies on p_i's side of the face.
@@ -101,23 +101,33 @@ inline bool interior_point(const double* const p[4], double k[3]) {
     return orient3d(r[0], r[1], r[2], r[3], w);
   };
   auto inside = [&](const double* q) {
+    for (int d = 0; d < 3; ++d)
+      if (!coordinate_in_range(q[d])) return false;
     for (int i = 0; i < 4; ++i)
       if (face_sign(i, q) <= 0) return false;
     return true;
   };
+  double centroid[3];
+  for (int d = 0; d < 3; ++d) centroid[d] = .25 * p[0][d] + .25 * p[1][d] + .25 * p[2][d] + .25 * p[3][d];
+  if (inside(centroid)) {
+    for (int d = 0; d < 3; ++d) k[d] = centroid[d];
+    return true;
+  }
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d)
+      if (!coordinate_in_range(p[i][d])) return false;  // (the bisections' numbering needs it)
+  double lo[3], hi[3];
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = hi[d] = p[0][d];
+    for (int i = 1; i < 4; ++i) lo[d] = std::min(lo[d], p[i][d]), hi[d] = std::max(hi[d], p[i][d]);
+  }
+  auto add_candidate = [](std::vector<double>& v, double x, double l, double h) {
+    if (l < x && x < h && coordinate_in_range(x)) v.push_back(x);
+  };
+  auto middle = [](double l, double h) { return l / 2 + h / 2; };  // no overflow
   static constexpr int kOrders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
   for (const auto& ord : kOrders) {
     const int a = ord[0], b = ord[1], c = ord[2];
-    double lo[3], hi[3];
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = hi[d] = p[0][d];
-      for (int i = 1; i < 4; ++i) lo[d] = std::min(lo[d], p[i][d]), hi[d] = std::max(hi[d], p[i][d]);
-    }
-    auto strictly_between = [](double x, double l, double h) { return l < x && x < h; };
-    auto add_candidate = [&](std::vector<double>& v, double x, double l, double h) {
-      if (strictly_between(x, l, h) && coordinate_in_range(x)) v.push_back(x);
-    };
-    auto middle = [](double l, double h) { return l / 2 + h / 2; };  // no overflow
     // The sign of face i's linear function's slope along c (its value at q is face_sign):
     // with q moved to the last place (3 - i transpositions), orient3d(r0, r1, r2, q) =
     // n . (q - r0), n = (r1 - r0) x (r2 - r0), whose c-component is the orient2d of the

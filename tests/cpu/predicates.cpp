@@ -1060,21 +1060,19 @@ namespace {
 
 // GMP: is q strictly inside the positive tet p (every face's orient3d with q in place of
 // its opposite vertex > 0)?
-bool oracle_inside(const double* const p[4], const double* q) {
-  for (int i = 0; i < 4; ++i) {
-    const double* r[5] = {p[0], p[1], p[2], p[3], nullptr};
-    r[i] = q;
-    Oracle o;
-    o.load(4, r, nullptr);
-    if (o.orient3d() <= 0) return false;
-  }
-  return true;
-}
 int oracle_orient(const double* const p[4]) {
   const double* r[5] = {p[0], p[1], p[2], p[3], nullptr};
   Oracle o;
   o.load(4, r, nullptr);
   return o.orient3d();
+}
+bool oracle_inside(const double* const p[4], const double* q) {
+  for (int i = 0; i < 4; ++i) {
+    const double* r[4] = {p[0], p[1], p[2], p[3]};
+    r[i] = q;
+    if (oracle_orient(r) <= 0) return false;
+  }
+  return true;
 }
 // The search's answer, checked: a point it returns is inside (GMP) and in the exact range.
 bool checked_interior_point(const double* const p[4]) {
