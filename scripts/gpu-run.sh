@@ -1614,6 +1614,15 @@ PY
   s55c)  # session 55, third call: gpu_predicates with orient3d_centroid_sos against GMP on the device
     step gpu_predicates 200 "$tbin/gpu_predicates"
     ;;
+  s56a)  # session 56: ∞'s kernel point as an exact centroid where no double lies in the first tet
+          # (Geo::k_centroid): every GPU test (hostile sets with the one-ulp cube and planes
+          # included), gpu_predicates, then new-vs-old (gdel-bench-old = s55a's binary) at 10^6
+          # (uniform, grid, sphere) and 10^7: the usual path must not slow down
+    gpu_tests
+    step gpu_predicates 200 "$tbin/gpu_predicates"
+    alternate s56a --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ROUNDS=1 alternate s56a_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

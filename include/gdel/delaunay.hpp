@@ -136,6 +136,10 @@ struct Stats {
   // InsertionRule::Circumcenter: the round after which the rounds inserted in SoS order
   // (exact insphere ties dominated the flipping so far); 0: never
   std::int64_t sos_order_round = 0;
+  // 1 when no double lies strictly inside the first tetrahedron (e.g. four points one ulp
+  // apart), so that the kernel point standing for ∞ is its vertices' exact centroid
+  // (docs/gflip3d.md, first tetrahedron); else 0
+  std::int64_t kernel_point_centroid = 0;
   // Options::nonoptimal_flips: rounds run (those after insertion rounds included), of
   // them the rounds run after an insertion round (independent splits only),
   // non-improving flips made (all rounds, kept or not), and the facets (∞'s included)

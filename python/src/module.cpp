@@ -124,6 +124,7 @@ nb::dict stats_dict(const gdel::Stats& s) {
   d["rounds"] = s.rounds;
   d["flip_iterations"] = s.flip_iterations;
   d["sos_order_round"] = s.sos_order_round;
+  d["kernel_point_centroid"] = s.kernel_point_centroid;
   d["flips23"] = s.flips23;
   d["flips32"] = s.flips32;
   d["exact_evaluations"] = s.exact_evaluations;

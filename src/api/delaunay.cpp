@@ -30,6 +30,7 @@ std::string Stats::to_string() const {
   s << "  rounds " << rounds << ", flip iterations " << flip_iterations << ", flips 2-3 " << flips23 << ", 3-2 "
     << flips32 << ", exact evaluations " << exact_evaluations << ", failed vertices " << failed_vertices
     << ", peak memory " << peak_bytes / (1024.0 * 1024.0) << " MiB";
+  if (kernel_point_centroid) s << "\n  kernel point: the exact centroid of the first tetrahedron (no double inside it)";
   if (sos_order_round > 0) s << "\n  insertion in SoS order after round " << sos_order_round << " (exact ties)";
   if (nonoptimal_rounds > 0)
     s << "\n  non-optimal flipping: rounds " << nonoptimal_rounds << " (" << nonoptimal_between_rounds

@@ -8,6 +8,10 @@
 //   orient3d with ∞ among the arguments = -orient3d with K in its place;
 //   insphere(tet ∋ ∞, e) = orient3d(hull facet of the tet, e): inside iff beyond;
 //   insphere(tet, ∞) = outside.
+// When the first tetrahedron holds no double at all (Geo::k_centroid; docs/gflip3d.md), K
+// is the exact centroid of its four vertices kq and orientations with ∞ are evaluated by
+// geom::orient3d_centroid_sos (xyz's slot for K then holds the rounded centroid, which no
+// predicate reads).
 // Every decision has a fast form (floating-point filter; returns kUndecided when it
 // cannot certify a non-zero sign) and an exact form (exact arithmetic, then
 // simulation of simplicity by original input index: never 0). The exact forms take a
@@ -22,8 +26,11 @@
 // triangulation has no flat tets (see orient4).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
+#include "core/macros.hpp"
 #include "geometry/predicates.hpp"
 #include "mesh/conventions.hpp"
 #include "parallel/atomic.hpp"
@@ -52,6 +59,14 @@ struct Geo {
   // the perturbation; atomic adds) of tets that are not flat, nullptr: not counted.
   // gFlip3D counts them in its first rounds (GFlip3D::decide_sos_order).
   std::int64_t* ties = nullptr;
+  // K is the exact centroid of the points kq[0..3] (not a double; see the top of this
+  // file). Never with int_all (integer input's centroid is a quarter-integer double).
+  bool k_centroid = false;
+  vid_t kq[4] = {0, 0, 0, 0};
+  // -1: an orientation with ∞ among its points is minus the one with K in ∞'s place (the
+  // rule above); +1: ∞'s id stands for K itself (gFlip3D's first location, whose cone
+  // tests are orientations with K).
+  int inf_sign = -1;
 
   GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
   // Whether an exact form may go on with work = nullptr (see the top of this file): over
@@ -69,18 +84,40 @@ struct Geo {
 
   // orient3d(a,b,c,d) > 0 iff (a,b,c,d) is positively oriented.
   GDEL_HD int orient_fast(vid_t a, vid_t b, vid_t c, vid_t d) const {
+    const bool with_inf = (a == inf) | (b == inf) | (c == inf) | (d == inf);
+    if (k_centroid && with_inf) return centroid_orient(a, b, c, d, nullptr);
     const int s = geom::orient3d_filter(p(a), p(b), p(c), p(d));
     if (filter_answer(s) == par::kUndecided) return par::kUndecided;
-    bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
-    return neg ? -s : s;
+    return with_inf ? inf_sign * s : s;
+  }
+  // Orientation with ∞ (times inf_sign) where K is the exact centroid of kq (k_centroid):
+  // the filter only (work = nullptr) or exact with SoS. Out of line: a rare path kept out
+  // of the registers of the kernels that inline orient_exact.
+  GDEL_NOINLINE GDEL_HD int centroid_orient(vid_t a, vid_t b, vid_t c, vid_t d, double* work) const {
+    const vid_t v[4] = {a, b, c, d};
+    const double* r[4];
+    std::int64_t ids[4];
+    int kpos = 0;
+    for (int i = 0; i < 4; ++i) {
+      r[i] = p(v[i]);
+      ids[i] = sid[v[i]];
+      if (v[i] == inf) kpos = i;
+    }
+    const double* q[4] = {p(kq[0]), p(kq[1]), p(kq[2]), p(kq[3])};
+    const int s = work ? geom::orient3d_centroid_sos(r, kpos, q, ids, work) : geom::orient3d_centroid_filter(r, kpos, q);
+    return filter_answer(s) == par::kUndecided ? int(par::kUndecided) : inf_sign * s;
   }
   template <class Work>
   GDEL_HD int orient_exact(vid_t a, vid_t b, vid_t c, vid_t d, Work work) const {
+    if (k_centroid && ((a == inf) | (b == inf) | (c == inf) | (d == inf))) {
+      if constexpr (std::is_same_v<Work, std::nullptr_t>) return par::kUndecided;
+      else return work ? centroid_orient(a, b, c, d, work) : int(par::kUndecided);
+    }
     if (geom::no_scratch(work) && !scratch_free(a, b, c, d)) return par::kUndecided;
     const int s = geom::orient3d_sos(p(a), p(b), p(c), p(d), sid[a], sid[b], sid[c], sid[d], work);
     if (exact_answer(s) == par::kUndecided) return par::kUndecided;  // (work = nullptr only)
-    bool neg = (a == inf) | (b == inf) | (c == inf) | (d == inf);
-    return neg ? -s : s;
+    const bool with_inf = (a == inf) | (b == inf) | (c == inf) | (d == inf);
+    return with_inf ? inf_sign * s : s;
   }
   template <bool Exact, class Work>
   GDEL_HD int orient(vid_t a, vid_t b, vid_t c, vid_t d, Work work) const {

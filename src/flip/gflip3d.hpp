@@ -337,7 +337,7 @@ class GFlip3D {
   vid_t infinite() const { return static_cast<vid_t>(n_); }
   Geo geo() {
     return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_, int_all_,
-               counting_ties_ ? counts_.data() + 5 : nullptr};
+               counting_ties_ ? counts_.data() + 5 : nullptr, k_centroid_, {kq_[0], kq_[1], kq_[2], kq_[3]}};
   }
 
   // --- a given initial structure (src/grid/initial.hpp, Options::initial = grid) ---------
@@ -557,8 +557,8 @@ class GFlip3D {
     vert_tet_.resize(static_cast<std::size_t>(n_));
     tid_t* vt = vert_tet_.data();
     Geo gk = geo();
-    gk.inf = -1;  // K as a genuine point for the cone test
-    gk.int_points = false;  // (∞ no longer marks K: only int_all says whether K is of the stage)
+    gk.inf_sign = 1;  // K as a genuine point for the cone test
+    gk.int_points = false;  // (K as a point: only int_all says whether K is of the stage)
     const vid_t K = inf;
     const vid_t o0 = t0[0], o1 = t0[1], o2 = t0[2], o3 = t0[3];
     auto locate = [=] GDEL_LAMBDA(std::int64_t q, double* work, bool exact) -> bool {
@@ -635,7 +635,7 @@ class GFlip3D {
   // centroid of four integer points, is a multiple of 1/4 (the sums are exact).
   void update_int_all() {
     const std::vector<double> k = host_point(n_);
-    int_all_ = quarter_points_ && geom::integer_point(k.data(), 0.0, geom::kQuarterScale);
+    int_all_ = quarter_points_ && !k_centroid_ && geom::integer_point(k.data(), 0.0, geom::kQuarterScale);
   }
 
   // K = a point strictly inside t0 (checked exactly), every coordinate in the predicates'
@@ -644,15 +644,20 @@ class GFlip3D {
   // of the doubles coordinate by coordinate with exact predicates (property tests found
   // (0,0,0), (0,0,2^-126), (0,1,0), (1,0,1), whose interior points need x and z below
   // ~2^-70, and (0,0,1), (0,1,0), (0,1,-2^-126), (1,0,0)). A tet whose interior holds no
-  // double at all (four points one ulp apart around (1,1,1)) raises the error:
-  // documented in docs/gflip3d.md.
+  // double at all (four points one ulp apart around (1,1,1); a wedge 2^-149 thick) gets
+  // the exact centroid of its vertices instead (Geo::k_centroid: orientations with ∞ by
+  // geom::orient3d_centroid_sos); the slot then holds the rounded centroid, which no
+  // predicate reads.
   void set_kernel_point(const vid_t t[4]) {
     std::vector<std::vector<double>> p;
     for (int k = 0; k < 4; ++k) p.push_back(host_point(t[k]));
     const double* pp[4] = {p[0].data(), p[1].data(), p[2].data(), p[3].data()};
     double k[3];
-    if (!geom::interior_point(pp, k))
-      throw Error("gflip3d: no interior point of the first tetrahedron is representable (tetrahedron too thin)");
+    k_centroid_ = !geom::interior_point(pp, k);
+    for (int i = 0; i < 4; ++i) kq_[i] = t[i];
+    if (k_centroid_)
+      for (int a = 0; a < 3; ++a) k[a] = .25 * pp[0][a] + .25 * pp[1][a] + .25 * pp[2][a] + .25 * pp[3][a];
+    st_.kernel_point_centroid = k_centroid_ ? 1 : 0;
     xyz_.set(static_cast<std::size_t>(3 * n_), k[0]);
     xyz_.set(static_cast<std::size_t>(3 * n_ + 1), k[1]);
     xyz_.set(static_cast<std::size_t>(3 * n_ + 2), k[2]);
@@ -1752,6 +1757,8 @@ class GFlip3D {
   bool int_points_ = false;      // Geo::int_points: every point is a point of the integer stage
   bool quarter_points_ = false;  // ... at the quarter scale
   bool int_all_ = false;         // Geo::int_all: those and the kernel point K (update_int_all)
+  bool k_centroid_ = false;      // Geo::k_centroid: K is the exact centroid of kq_ (set_kernel_point)
+  vid_t kq_[4] = {0, 0, 0, 0};
   FlipConfig cfg_;
   Stats& st_;
   mesh::TetMesh<B> mesh_;

@@ -544,8 +544,8 @@ GDEL_HD int orient3d_sos(const double* a, const double* b, const double* c,
 // orient3d_sos, as a point of index ids[kpos]. The determinant is linear in K's row
 // (K, 1) = sum_i (q_i, 1) / 4, so its value and every SoS minor with K's row are sums of
 // the four with q_i in K's place: each evaluated exactly, summed as expansions. Never 0.
-// p[kpos] is not read. Work: kPredicateWork doubles (a scratch is required). Not yet used
-// by gFlip3D (its kernel point is a double; the wiring is the next step).
+// p[kpos] is not read. Work: kPredicateWork doubles (a scratch is required). flip::Geo
+// uses it for ∞ when gFlip3D's first tetrahedron holds no double (Geo::k_centroid).
 namespace detail {
 // Sign of sum_i det[(q, 1)] over the rows rr[0..k] and columns cc[0..k) with sorted row kr
 // replaced by q_i.
@@ -590,9 +590,9 @@ struct CentroidMinor {
 };
 }  // namespace detail
 
-GDEL_HD inline int orient3d_centroid_sos(const double* const p[4], int kpos, const double* const q[4],
-                                         const std::int64_t ids[4], double* work) {
-  // filter: the four terms' filters agree on a sign
+// The filter of orient3d_centroid_sos: the sign on which the four terms' filters agree
+// (each certain and non-zero), else kUncertain.
+GDEL_HD inline int orient3d_centroid_filter(const double* const p[4], int kpos, const double* const q[4]) {
   int agree = 0;
   for (int i = 0; i < 4 && agree != kUncertain; ++i) {
     const double* r[4] = {p[0], p[1], p[2], p[3]};
@@ -600,6 +600,12 @@ GDEL_HD inline int orient3d_centroid_sos(const double* const p[4], int kpos, con
     const int f = orient3d_filter(r[0], r[1], r[2], r[3]);
     agree = (f == kUncertain || f == 0 || (agree != 0 && f != agree)) ? kUncertain : f;
   }
+  return agree;
+}
+
+GDEL_HD inline int orient3d_centroid_sos(const double* const p[4], int kpos, const double* const q[4],
+                                         const std::int64_t ids[4], double* work) {
+  const int agree = orient3d_centroid_filter(p, kpos, q);
   if (agree != kUncertain) return agree;
   const double* pp[4] = {p[0], p[1], p[2], p[3]};
   pp[kpos] = q[0];  // (a placeholder: the sorted row of K is replaced in every minor)

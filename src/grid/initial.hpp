@@ -198,6 +198,8 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   } catch (const DegenerateInput&) {
     return fallback("the sites are coplanar");
   }
+  if (sub.kernel_point_centroid)  // (K would be copied below as a double: none is inside)
+    return fallback("no double lies inside the sites' first tetrahedron");
   st.stages.push_back({"grid initial: sites' triangulation (gStar4D from the grid)", since(t0)});
   const std::int64_t nt = static_cast<std::int64_t>(tv.size() / 4);
   t0 = std::chrono::steady_clock::now();

@@ -648,10 +648,12 @@ class Splayer {
     return H.g;
   }
   // Brings the points ids (any order, repeats allowed; ∞'s K is always added) into
-  // host_geo's arrays: gathered on the backend, one copy, scattered on the host.
+  // host_geo's arrays: gathered on the backend, one copy, scattered on the host. (With
+  // Geo::k_centroid the four points whose centroid K is come too.)
   void fetch_points(std::vector<vid_t> ids) {
     host_geo();
     ids.push_back(g_.inf);
+    if (g_.k_centroid) ids.insert(ids.end(), g_.kq, g_.kq + 4);
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     constexpr int kStride = 5;  // x, y, z, the SoS id's bits, the weight

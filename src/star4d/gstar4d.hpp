@@ -38,9 +38,11 @@ void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid
   auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
   auto t0 = std::chrono::steady_clock::now();
   vid_t first[4];
+  flip::Geo kg{};  // the seed's ∞: K in slot m, or the exact centroid of kg.kq (Geo::k_centroid)
   {
     flip::GFlip3D<B> seed(ctx, P, sid, m, flip::FlipConfig{}, st);
     seed.first_tetrahedron(first);  // degeneracy check + kernel point (slot m)
+    kg = seed.geo();
   }
   if (m == 4) {
     // Four affinely independent points: their (regular) triangulation is that one
@@ -72,8 +74,11 @@ void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid
   // integer input: exact evaluations without a scratch (flip::Geo::int_points / int_all;
   // slot m holds the kernel point, weights[m] its weight)
   const bool int_points = flip::all_integer_points(ctx, P.data(), weights, m);
-  const bool int_all = flip::all_integer_points(ctx, P.data(), weights, m + 1, geom::kQuarterScale);
-  const flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m), weights, int_points, int_all};
+  const bool int_all =
+      !kg.k_centroid && flip::all_integer_points(ctx, P.data(), weights, m + 1, geom::kQuarterScale);
+  flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m), weights, int_points, int_all};
+  g.k_centroid = kg.k_centroid;
+  for (int i = 0; i < 4; ++i) g.kq[i] = kg.kq[i];
   StarStage<B> stage(ctx, g, m);
   stage.splay(ws.offsets.data(), ws.ids.data());
   ctx.synchronize();

@@ -168,17 +168,39 @@ inline void gflip_degenerate_cases(Backend b) {
   Triangulation ts2 = delaunay(sliver2, o);
   expect_flip_output_valid(sliver2, ts2, b);
   EXPECT_EQ(ts2.num_tets(), 1);
+  EXPECT_EQ(ts2.stats.kernel_point_centroid, 0);
   // four points one ulp apart around (1,1,1): no double lies strictly inside their
-  // tetrahedron, so there is no kernel point: a clear error, not a wrong answer
+  // tetrahedron, so the kernel point is its exact centroid (Geo::k_centroid)
   const double u = std::ldexp(1.0, -52);
   const std::vector<double> ulp = {1, 1, 1, 1 + u, 1, 1, 1, 1 + u, 1, 1, 1, 1 + u};
-  expect_error<Error>([&] { (void)delaunay(ulp, o); }, {"too thin"},
-                      "a tetrahedron without a representable interior point");
+  const Triangulation tu = delaunay(ulp, o);
+  expect_flip_output_valid(ulp, tu, b);
+  EXPECT_EQ(tu.num_tets(), 1);
+  EXPECT_EQ(tu.stats.kernel_point_centroid, 1);
   // a wedge 2^-149 thick across the plane x = y (session 55's stress run): no double
   // inside it either (docs/gflip3d.md)
   const std::vector<double> wedge = {1.5, 1.5, 2, 0, std::ldexp(1.0, -149), -504.2170104980469,
                                      0.5, 0.5, -std::ldexp(1.0, -126), 2, 2, std::ldexp(1.0, -125)};
-  expect_error<Error>([&] { (void)delaunay(wedge, o); }, {"too thin"}, "a wedge without an interior double");
+  const Triangulation tw = delaunay(wedge, o);
+  expect_flip_output_valid(wedge, tw, b);
+  EXPECT_EQ(tw.num_tets(), 1);
+  EXPECT_EQ(tw.stats.kernel_point_centroid, 1);
+  // points on two planes one ulp apart: every point is inserted with orientations
+  // against the exact centroid (flips, walks and cones over the hull)
+  std::vector<double> slab;
+  for (int i = 0; i < 400; ++i) {
+    const double y = std::ldexp(double((i * 37) % 101), -7), z = std::ldexp(double((i * 53) % 97), -7);
+    slab.insert(slab.end(), {1 + u * (i & 1), y, z + (i & 1) / 197.0});
+  }
+  for (bool rounds : {false, true}) {  // (CPU: one point per round and the GPU's rounds)
+    Options r = o;
+    r.cpu_rounds = rounds;
+    const Triangulation tsl = delaunay(slab, r);
+    expect_flip_output_valid(slab, tsl, b);
+    EXPECT_EQ(tsl.stats.kernel_point_centroid, 1);
+    r.algorithm = Algorithm::gdel3d;
+    expect_exact_delaunay(slab, delaunay(slab, r), b);
+  }
 }
 
 // Independent splits (Options::independent_splits): no two tets that share a

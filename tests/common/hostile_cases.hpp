@@ -13,7 +13,9 @@
 //   * two skew lines (Theta(n^2) tets);
 //   * all points on a few planes (many coplanar and cospherical subsets);
 //   * magnitudes 1e300 and 1e-300 (scaled by a power of two into the exact range), and a
-//     set spanning both, which no such scaling covers: a clear InvalidInput.
+//     set spanning both, which no such scaling covers: a clear InvalidInput;
+//   * sets whose first tetrahedron holds no double (a cube of side one ulp, two planes one
+//     ulp apart): ∞'s kernel point is the exact centroid (Stats::kernel_point_centroid).
 // The 2*10^7-point run (gDel3D issue 6 crashed there: 26-bit tet ids) is in the GPU test.
 #pragma once
 
@@ -32,6 +34,7 @@ namespace gdel::test {
 struct NamedSet {
   std::string name;
   std::vector<double> pts;
+  bool centroid_kernel = false;  // no double inside the first tetrahedron (expected)
 };
 
 inline std::vector<NamedSet> hostile_sets() {
@@ -80,6 +83,19 @@ inline std::vector<NamedSet> hostile_sets() {
     for (double& x : q) x *= 1e-300;
     sets.push_back({"magnitude 1e-300", q});
   }
+  {
+    // No double lies strictly between 1 and 1 + 2^-52: neither inside this cube nor
+    // between these planes, so no first tetrahedron has a kernel point that is a double
+    const double u = std::ldexp(1.0, -52);
+    std::vector<double> c;
+    for (int i = 0; i < 8; ++i) c.insert(c.end(), {1 + u * (i & 1), 1 + u * ((i >> 1) & 1), 1 + u * (i >> 2)});
+    sets.push_back({"a cube of side one ulp", c, true});
+    std::mt19937_64 rng(25);
+    std::uniform_real_distribution<double> r(0.0, 1.0);
+    std::vector<double> p;
+    for (int i = 0; i < 300; ++i) p.insert(p.end(), {1 + u * (i & 1), r(rng), r(rng)});
+    sets.push_back({"two planes one ulp apart", p, true});
+  }
   return sets;
 }
 
@@ -92,8 +108,10 @@ inline void hostile_cases(Backend b) {
     o.algorithm = Algorithm::gdel3d;
     const Triangulation t = delaunay(s.pts, o);
     expect_exact_delaunay(s.pts, t, b);
+    EXPECT_EQ(t.stats.kernel_point_centroid, s.centroid_kernel ? 1 : 0);
     o.algorithm = Algorithm::gstar4d;
     Triangulation u = delaunay(s.pts, o);
+    EXPECT_EQ(u.stats.kernel_point_centroid, s.centroid_kernel ? 1 : 0);
     EXPECT_EQ(u.stats.algorithm, "gstar4d");
     u.stats.algorithm = "gdel3d";  // expect_exact_delaunay's label check
     expect_exact_delaunay(s.pts, u, b);

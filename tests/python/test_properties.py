@@ -152,15 +152,7 @@ def test_float32_sets_with_duplicates(base, dup):
         with pytest.raises(gdel.DegenerateInputError):
             gdel.Delaunay(p)
         return
-    try:
-        tri = gdel.Delaunay(p)
-    except gdel.GdelError as e:
-        # the documented limit (docs/gflip3d.md, first tetrahedron): a first tetrahedron
-        # with no double that geom::interior_point finds strictly inside it (e.g. the
-        # wedge in test_first_tetrahedron_without_a_kernel_point); any other error fails
-        if "tetrahedron too thin" not in str(e):
-            raise
-        return
+    tri = gdel.Delaunay(p)
     _assert_full_contract(p.astype(np.float64), tri, "gdel3d")
     assert (tri.vertex_to_simplex[tri.representative != np.arange(len(p))] == -1).all()
 
@@ -179,16 +171,22 @@ def test_thin_first_tetrahedron_with_interior_doubles():
 # nearly on the plane x = y, 2^-149 off it at most, so the tet is 2^-149 thick across
 # that plane where its coordinates are about 1 (doubles 2^-52 apart) and reaches
 # coordinates below 2^-97 (where doubles are fine enough) only at heights no double
-# represents: no double lies strictly inside it, so there is no kernel point and gdel
-# raises "tetrahedron too thin" (docs/gflip3d.md). CGAL triangulates it (one tet). The fix
-# is an exact kernel point (the first tet's centroid, orient3d with it as the sum of four
-# exact orient3d), not a better search; strict, so that fix shows.
-@pytest.mark.xfail(raises=gdel.GdelError, strict=True, reason="no double inside the only tetrahedron")
+# represents: no double lies strictly inside it. The kernel point that stands for infinity
+# is then the exact centroid of the tet (docs/gflip3d.md); CGAL triangulates it too (one
+# tet). With more points on the same two planes one ulp apart, every insertion is
+# located and flipped with orientations against that centroid.
 def test_first_tetrahedron_without_a_kernel_point():
     p = np.array([(1.5, 1.5, 2.0), (0.0, 1.401298464324817e-45, -504.2170104980469),
                   (0.5, 0.5, -1.1754943508222875e-38), (2.0, 2.0, 2.350988701644575e-38)])
     assert orient_exact(*p) != 0
-    _assert_full_contract(p, gdel.Delaunay(p), "gdel3d")
+    tri = gdel.Delaunay(p)
+    _assert_full_contract(p, tri, "gdel3d")
+    assert tri.stats["kernel_point_centroid"] == 1
+    rng = np.random.default_rng(55)
+    q = np.column_stack([1 + np.ldexp(1.0, -52) * (np.arange(500) % 2), rng.random(500), rng.random(500)])
+    tri = gdel.Delaunay(q)
+    _assert_full_contract(q, tri, "gdel3d")
+    assert tri.stats["kernel_point_centroid"] == 1
 
 
 @given(
