@@ -1623,6 +1623,15 @@ PY
     alternate s56a --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ROUNDS=1 alternate s56a_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
+  s56b)  # session 56, second call: s56a measured the centroid's out-of-line call in Geo::orient_fast
+          # +13 % on uniform 10^6 and 10^7; the fast form now answers undecided there (no call):
+          # gpu_gflip3d, gpu_hostile, registers against s55a's binary, new-vs-old at 10^6 and 10^7
+    step gpu_gflip3d 200 "$tbin/gpu_gflip3d"
+    step gpu_hostile 200 "$tbin/gpu_hostile"
+    res_usage gdel-bench-old gdel-bench
+    alternate s56b --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    alternate s56b_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -85,14 +85,16 @@ struct Geo {
   // orient3d(a,b,c,d) > 0 iff (a,b,c,d) is positively oriented.
   GDEL_HD int orient_fast(vid_t a, vid_t b, vid_t c, vid_t d) const {
     const bool with_inf = (a == inf) | (b == inf) | (c == inf) | (d == inf);
-    if (k_centroid && with_inf) return centroid_orient(a, b, c, d, nullptr);
+    // (the exact form filters first: no call here, which slowed every fast kernel by up to
+    // 14 % on an H100, bench/RESULTS.md session 56)
+    if (k_centroid && with_inf) return par::kUndecided;
     const int s = geom::orient3d_filter(p(a), p(b), p(c), p(d));
     if (filter_answer(s) == par::kUndecided) return par::kUndecided;
     return with_inf ? inf_sign * s : s;
   }
   // Orientation with ∞ (times inf_sign) where K is the exact centroid of kq (k_centroid):
-  // the filter only (work = nullptr) or exact with SoS. Out of line: a rare path kept out
-  // of the registers of the kernels that inline orient_exact.
+  // its filter, then exact with SoS (work: a scratch). Out of line: a rare path kept out of
+  // the registers of the kernels that inline orient_exact.
   GDEL_NOINLINE GDEL_HD int centroid_orient(vid_t a, vid_t b, vid_t c, vid_t d, double* work) const {
     const vid_t v[4] = {a, b, c, d};
     const double* r[4];
@@ -104,8 +106,7 @@ struct Geo {
       if (v[i] == inf) kpos = i;
     }
     const double* q[4] = {p(kq[0]), p(kq[1]), p(kq[2]), p(kq[3])};
-    const int s = work ? geom::orient3d_centroid_sos(r, kpos, q, ids, work) : geom::orient3d_centroid_filter(r, kpos, q);
-    return filter_answer(s) == par::kUndecided ? int(par::kUndecided) : inf_sign * s;
+    return inf_sign * geom::orient3d_centroid_sos(r, kpos, q, ids, work);  // (never 0)
   }
   template <class Work>
   GDEL_HD int orient_exact(vid_t a, vid_t b, vid_t c, vid_t d, Work work) const {
