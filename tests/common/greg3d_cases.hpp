@@ -272,6 +272,18 @@ inline void greg3d_special_cases(Backend b) {
     EXPECT_EQ(t.neighbors, std::vector<std::int32_t>(4, -1));
   }
   {
+    SCOPED_TRACE("points on two planes one ulp apart: no double inside any tetrahedron");
+    const double u = std::ldexp(1.0, -52);
+    std::vector<double> P, w;
+    for (int i = 0; i < 300; ++i) {
+      P.insert(P.end(), {1 + u * (i & 1), std::ldexp(double((i * 37) % 101), -7), std::ldexp(double((i * 53) % 97), -7)});
+      w.push_back(std::ldexp(double((i * 29) % 7), -12));  // (some points hidden)
+    }
+    RegularTriangulation r = regular(P, w, o);
+    expect_exact_regular(P, w, r, b);
+    EXPECT_EQ(r.stats.kernel_point_centroid, 1);  // ∞'s kernel point: the exact centroid
+  }
+  {
     SCOPED_TRACE("negative and mixed weights");
     auto P = gen::generate(gen::Distribution::Uniform, 2000, 8);
     auto w = random_weights(2000, 1.0, 10.0, 4, -1.0);
