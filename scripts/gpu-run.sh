@@ -1632,6 +1632,13 @@ PY
     alternate s56b --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     alternate s56b_e7 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
+  s56c)  # session 56, third call: the GPU tests s56b did not run, on the final source (gpu_greg3d with
+          # the two planes one ulp apart); a third round of new-vs-old at 10^6, and step profiles
+          # of both on uniform 10^6 (s56b's new binary ran it 7-10 % faster: where?)
+    for t in gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_mesh gpu_predicates; do step "$t" 200 "$tbin/$t"; done
+    ROUNDS=1 alternate s56c --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_PROFILE=1 alternate s56c_prof --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
