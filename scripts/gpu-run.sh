@@ -1639,6 +1639,12 @@ PY
     ROUNDS=1 alternate s56c --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     GDEL_PROFILE=1 alternate s56c_prof --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s56d)  # session 56, fourth call: scripts/stress-small.py through the CUDA gdel command (small sets
+          # whose first tetrahedron holds no double, among other hostile ones), every result checked
+    step stress 420 python3 scripts/stress-small.py --gdel "$bin/gdel" --device cuda --sets 2000 --seed 56 \
+      --seconds 360 --keep "$out/stress"
+    tail -12 /tmp/gpu-run-stress.log | tee -a "$out/summary.txt"
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
