@@ -57,6 +57,11 @@ void preflight_output(const std::filesystem::path& path);
 // Delaunay; gflip3d a valid triangulation in which non-locally-Delaunay facets and, on
 // degenerate input, flat tets are allowed.
 bool meets_contract(const gdel::VerifyReport& r, const std::string& algorithm);
+// The text after "check: ": the verifier's summary, which starts "OK", "VALID but not
+// Delaunay/regular" or "INVALID"; for a gflip3d result that meets its contract but is
+// not Delaunay (facets not locally Delaunay, flat tets on degenerate input) it is
+// prefixed "OK for gflip3d", so that a passing check never reads "INVALID".
+std::string check_line(const gdel::VerifyReport& r, const std::string& algorithm);
 
 // A one-line reason for a failed verification ("2 facets not locally Delaunay", ...).
 std::string failure_reason(const gdel::VerifyReport& r, const std::string& algorithm, bool weighted = false);

@@ -293,7 +293,7 @@ int main(int argc, char** argv) {
         t0 = Clock::now();
         const gdel::VerifyReport r = gdel::verify(ps.xyz, t.tets, {}, o.backend);
         verify_s = since(t0);
-        check_summary = r.summary();
+        check_summary = check_line(r, t.stats.algorithm);
         if (!meets_contract(r, t.stats.algorithm)) {
           progress.print([&] { std::printf("check: %s\n", check_summary.c_str()); });
           return fail(kCheck, "check failed: " + t.stats.algorithm + " result is " + failure_reason(r, t.stats.algorithm) +

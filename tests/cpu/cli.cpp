@@ -165,6 +165,22 @@ TEST_F(CliTest, DelaunayWritesEveryFormatAndCheckAcceptsIt) {
                                                  "mesh.ele", "mesh.neigh", "mesh.node", "pts.xyz"}));
 }
 
+// gflip3d's contract allows flat tets on degenerate input (and facets not locally
+// Delaunay): a passing check says "OK for gflip3d", never "INVALID".
+TEST_F(CliTest, CheckOfAGflip3dResultWithFlatTets) {
+  std::string grid;
+  for (int i = 0; i < 125; ++i)
+    grid += std::to_string(i % 5) + " " + std::to_string(i / 5 % 5) + " " + std::to_string(i / 25) + "\n";
+  text("grid.xyz", grid);
+  Result r = gdel({"delaunay", "grid.xyz", "-o", "g.ele", "--device", "cpu", "--algorithm", "gflip3d", "--check"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto tets = gdel::io::read_ele(work("g.ele"));
+  const auto pts = gdel::io::read_points(work("grid.xyz")).xyz;
+  ASSERT_GT(gdel::verify(pts, tets, {}, gdel::Backend::Cpu).degenerate_tets, 0) << "the case needs flat tets";
+  EXPECT_NE(r.out.find("check: OK for gflip3d"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("check: INVALID"), std::string::npos) << r.out;
+}
+
 TEST_F(CliTest, RegularWritesEveryPointAndTheRedundantList) {
   write_points("pts.xyz", 1500, 4);
   const auto pts = gdel::io::read_points(work("pts.xyz")).xyz;
