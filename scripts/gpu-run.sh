@@ -1645,6 +1645,9 @@ PY
       --seconds 360 --keep "$out/stress"
     tail -12 /tmp/gpu-run-stress.log | tee -a "$out/summary.txt"
     ;;
+  s56e)  # session 56, fifth call: uniform 10^8 with the centroid-capable Geo (peak bytes per point, verified)
+    GDEL_PROFILE=1 bench s56e_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
