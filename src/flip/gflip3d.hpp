@@ -655,8 +655,7 @@ class GFlip3D {
     double k[3];
     k_centroid_ = !geom::interior_point(pp, k);
     for (int i = 0; i < 4; ++i) kq_[i] = t[i];
-    if (k_centroid_)
-      for (int a = 0; a < 3; ++a) k[a] = .25 * pp[0][a] + .25 * pp[1][a] + .25 * pp[2][a] + .25 * pp[3][a];
+    if (k_centroid_) geom::rounded_centroid(pp, k);
     st_.kernel_point_centroid = k_centroid_ ? 1 : 0;
     xyz_.set(static_cast<std::size_t>(3 * n_), k[0]);
     xyz_.set(static_cast<std::size_t>(3 * n_ + 1), k[1]);

@@ -89,6 +89,12 @@ bool last_true(double lo, double hi, Pred pred, double& out) {
 
 }  // namespace detail
 
+// The rounded centroid .25 p0 + .25 p1 + .25 p2 + .25 p3 (the search's first candidate;
+// gFlip3D's stored value for an exact-centroid kernel point).
+inline void rounded_centroid(const double* const p[4], double k[3]) {
+  for (int d = 0; d < 3; ++d) k[d] = .25 * p[0][d] + .25 * p[1][d] + .25 * p[2][d] + .25 * p[3][d];
+}
+
 // p[0..3] with orient3d(p0, p1, p2, p3) > 0, coordinates in the exact range. Writes k and
 // returns true when the search finds a double point strictly inside (checked exactly).
 inline bool interior_point(const double* const p[4], double k[3]) {
@@ -108,7 +114,7 @@ inline bool interior_point(const double* const p[4], double k[3]) {
     return true;
   };
   double centroid[3];
-  for (int d = 0; d < 3; ++d) centroid[d] = .25 * p[0][d] + .25 * p[1][d] + .25 * p[2][d] + .25 * p[3][d];
+  rounded_centroid(p, centroid);
   if (inside(centroid)) {
     for (int d = 0; d < 3; ++d) k[d] = centroid[d];
     return true;
