@@ -1648,6 +1648,12 @@ PY
   s56e)  # session 56, fifth call: uniform 10^8 with the centroid-capable Geo (peak bytes per point, verified)
     GDEL_PROFILE=1 bench s56e_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s57a)  # session 57, first call (H200): HEAD's device code (s56b's gdel-bench) on the device; 2*10^8 on one GPU
+    bench s57a_e6 150 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s57a_e7 120 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_PROFILE=1 bench s57a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_FLIP_TRACE=1 bench s57a_2e8 240 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -4,6 +4,7 @@
 // arithmetic + SoS), selected by the template flag Exact.
 #pragma once
 
+#include <climits>
 #include <cstdint>
 
 #include "flip/geo.hpp"
@@ -393,6 +394,18 @@ GDEL_HD inline int prop_tets(const MeshView& m, tid_t b, int prop, tid_t out[3])
     return 3;
   }
   return 2;
+}
+
+// The vote of tet b's proposal prop (>= 0) in its tets (GFlip3D::commit_flips): an atomic
+// max of vstamp | INT_MAX - b, so that the smallest proposer wins each tet; `accepted`
+// compares with the same value.
+GDEL_HD inline std::uint64_t vote_value(std::uint64_t vstamp, tid_t b) {
+  return vstamp | static_cast<std::uint64_t>(INT_MAX - b);
+}
+GDEL_HD inline void cast_vote(const MeshView& m, tid_t b, int prop, std::uint64_t* vote, std::uint64_t vstamp) {
+  tid_t ts[3];
+  const int nt = prop_tets(m, b, prop, ts);
+  for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], vote_value(vstamp, b));
 }
 
 // ---------------------------------------------------------------------------

@@ -67,6 +67,11 @@ struct Geo {
   // rule above); +1: ∞'s id stands for K itself (gFlip3D's first location, whose cone
   // tests are orientations with K).
   int inf_sign = -1;
+  // K as another Geo over the same points has it (k_centroid and kq).
+  void take_kernel_point(const Geo& o) {
+    k_centroid = o.k_centroid;
+    for (int i = 0; i < 4; ++i) kq[i] = o.kq[i];
+  }
 
   GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
   // Whether an exact form may go on with work = nullptr (see the top of this file): over
@@ -82,9 +87,13 @@ struct Geo {
   GDEL_HD static int exact_answer(int s) { return s == geom::kUncertain ? int(par::kUndecided) : s; }
   GDEL_HD static int filter_answer(int s) { return (s == geom::kUncertain || s == 0) ? int(par::kUndecided) : s; }
 
+  // Whether ∞ is among the four vertices.
+  GDEL_HD bool has_inf(vid_t a, vid_t b, vid_t c, vid_t d) const {
+    return (a == inf) | (b == inf) | (c == inf) | (d == inf);
+  }
   // orient3d(a,b,c,d) > 0 iff (a,b,c,d) is positively oriented.
   GDEL_HD int orient_fast(vid_t a, vid_t b, vid_t c, vid_t d) const {
-    const bool with_inf = (a == inf) | (b == inf) | (c == inf) | (d == inf);
+    const bool with_inf = has_inf(a, b, c, d);
     // (the exact form filters first: no call here, which slowed every fast kernel by up to
     // 14 % on an H100, bench/RESULTS.md session 56)
     if (k_centroid && with_inf) return par::kUndecided;
@@ -110,14 +119,14 @@ struct Geo {
   }
   template <class Work>
   GDEL_HD int orient_exact(vid_t a, vid_t b, vid_t c, vid_t d, Work work) const {
-    if (k_centroid && ((a == inf) | (b == inf) | (c == inf) | (d == inf))) {
+    const bool with_inf = has_inf(a, b, c, d);
+    if (k_centroid && with_inf) {
       if constexpr (std::is_same_v<Work, std::nullptr_t>) return par::kUndecided;
       else return work ? centroid_orient(a, b, c, d, work) : int(par::kUndecided);
     }
     if (geom::no_scratch(work) && !scratch_free(a, b, c, d)) return par::kUndecided;
     const int s = geom::orient3d_sos(p(a), p(b), p(c), p(d), sid[a], sid[b], sid[c], sid[d], work);
     if (exact_answer(s) == par::kUndecided) return par::kUndecided;  // (work = nullptr only)
-    const bool with_inf = (a == inf) | (b == inf) | (c == inf) | (d == inf);
     return with_inf ? inf_sign * s : s;
   }
   template <bool Exact, class Work>

@@ -964,26 +964,37 @@ class GFlip3D {
     }
     team_work_.release();  // (a large iteration: not part of its peak)
     Buffer<std::int8_t, B> und(ctx_, static_cast<std::size_t>(na));
+    // each decided proposal votes where it is made (vote_in_propose_): the tet's
+    // neighbours are at hand there, where a pass of its own would fetch them again
+    const bool vote_here = vote_in_propose_;
+    std::uint64_t* vote = aux_key_.data();
+    const std::uint64_t vstamp = vote_stamp();
+    if (vote_here) marks_dirty_ = true;
+    auto decided = [=] GDEL_LAMBDA(std::int64_t k, int p) {
+      pp[k] = p;
+      if (vote_here && p >= 0) cast_vote(m, A[k], p, vote, vstamp);
+    };
     auto fast = [=] GDEL_LAMBDA(std::int64_t k) {
       if (alen && k >= *alen) {
         pp[k] = -1;  // past the active set: no proposal
         return true;
       }
-      int p = propose_flip<false>(g, m, A[k], nullptr);
-      pp[k] = p;
-      return p != kUndecidedResult;
+      const int p = propose_flip<false>(g, m, A[k], nullptr);
+      if (p == kUndecidedResult) return false;
+      decided(k, p);
+      return true;
     };
     if (g.int_all && split_exact_) {  // the undecided tets' exact proposals a face per thread
       auto part = [=] GDEL_LAMBDA(std::int64_t k, int i, auto work) {
         return face_proposal(g, m, A[k], i, work);
       };
-      auto join = [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { pp[k] = join_face_proposals(r); };
+      auto join = [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { decided(k, join_face_proposals(r)); };
       st_.exact_evaluations += par::fast_then_split(ctx_, na, und.data(), fast, 4, part, join, exact_tally());
     } else {
       auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
         const int p = propose_flip<true>(g, m, A[k], work);
         if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
-        pp[k] = p;
+        decided(k, p);
         return true;
       };
       st_.exact_evaluations += fast_then_exact(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
@@ -991,8 +1002,13 @@ class GFlip3D {
     par::mark(ctx_, "flip: propose");
     und.release();
     active_deferred_ = false;
-    return commit_flips(A, na, prop, with_log, defer_active()) > 0;
+    return commit_flips(A, na, prop, with_log, defer_active(), false, nullptr, vote_here) > 0;
   }
+
+  // A large flip iteration's proposals vote in the proposing pass (flip_iteration), not
+  // in a pass of their own (commit_flips); GDEL_VOTE_IN_PROPOSE=0 for measurements: the
+  // pass (bench/RESULTS.md, session 57). The same flips either way.
+  static bool vote_in_propose_setting() { return !par::knob_off("GDEL_VOTE_IN_PROPOSE"); }
 
   // On integer input (Geo::int_all) the large iterations' exact proposals run a face per
   // thread (par::fast_then_split: face_proposal, join_face_proposals), not a tet per
@@ -1068,8 +1084,11 @@ class GFlip3D {
   // active_deferred_ set; active_ then has the set's bound as its size).
   // propose (na <= team_max_ only): the proposals are not made yet; the team that decides
   // makes them first, A[k] for k < min(na, *alen) (alen: a deferred active set's length).
+  // voted (na > team_max_ only): the proposing pass has cast the votes (cast_vote with
+  // vote_stamp(), flip_iteration) and set marks_dirty_.
   std::int64_t commit_flips(const tid_t* A, std::int64_t na, Buffer<std::int32_t, B>& prop, bool with_log,
-                            bool defer = false, bool propose = false, const std::int64_t* alen = nullptr) {
+                            bool defer = false, bool propose = false, const std::int64_t* alen = nullptr,
+                            bool voted = false) {
     std::int32_t* pp = prop.data();
     MeshView m = mesh_.view();
     const Geo g = geo();
@@ -1105,24 +1124,19 @@ class GFlip3D {
     std::uint64_t* vote = aux_key_.data();
     marks_dirty_ = true;
     const std::uint64_t vstamp = vote_stamp();
-    Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(npb));
-    std::int8_t* ap = acc.data();
     Buffer<std::int32_t, B> fl(ctx_, static_cast<std::size_t>(npb));  // positions in pl, then in A
     std::int32_t* flp = fl.data();
     // 2-3 flips: each needs one new slot (o23: their exclusive offsets; cn[2]: how many)
     // (int32: at most np < 2^31 flips)
     Buffer<std::int32_t, B> off23(ctx_, static_cast<std::size_t>(npb + 1));
     std::int32_t* o23 = off23.data();
-    // vote: the smallest proposer index wins each tet, by an atomic max in aux_key_ of
-    // vote_stamp() | INT_MAX - index; accepted flips are disjoint. The stamp (this
-    // iteration's, above every earlier vote and flip stamp) spares a pass that would
-    // reset the votes. j: a position in the proposer list.
-    auto cast_vote = [=] GDEL_LAMBDA(std::int64_t j) {
+    // vote: the smallest proposer wins each tet, by an atomic max in aux_key_ of
+    // vote_stamp() | INT_MAX - proposer (flip::cast_vote); accepted flips are disjoint. The
+    // stamp (this iteration's, above every earlier vote and flip stamp) spares a pass that
+    // would reset the votes. j: a position in the proposer list.
+    auto vote_of = [=] GDEL_LAMBDA(std::int64_t j) {
       const std::int64_t k = plp[j];
-      if (pp[k] < 0) return;  // stuck
-      tid_t ts[3];
-      const int nt = prop_tets(m, A[k], pp[k], ts);
-      for (int l = 0; l < nt; ++l) par::atomic_max(vote + ts[l], vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+      if (pp[k] >= 0) cast_vote(m, A[k], pp[k], vote, vstamp);  // (a stuck tet does not vote)
     };
     // after the votes: whether proposer j won every tet of its flip (a stuck tet: never)
     auto accepted = [=] GDEL_LAMBDA(std::int64_t j) {
@@ -1130,7 +1144,7 @@ class GFlip3D {
       tid_t ts[3];
       const int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
       bool ok = nt > 0;
-      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == (vstamp | static_cast<std::uint64_t>(INT_MAX - A[k]));
+      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == vote_value(vstamp, A[k]);
       return ok;
     };
     if (na <= team_max_) {
@@ -1149,7 +1163,7 @@ class GFlip3D {
           tm.sync();
         }
         const std::int64_t np = par::team_select(tm, na, plp, is_proposer);
-        for (std::int64_t j = tm.rank(); j < np; j += tm.size()) cast_vote(j);
+        for (std::int64_t j = tm.rank(); j < np; j += tm.size()) vote_of(j);
         tm.sync();
         // accepted flips and the 2-3 flips among them, counted by one sum (high and low
         // words: both below 2^31)
@@ -1160,7 +1174,6 @@ class GFlip3D {
           bool is23 = false;
           if (j < np) {
             ok = accepted(j);
-            ap[j] = ok ? 1 : 0;
             is23 = ok && prop_type(pp[plp[j]]) == 1;
           }
           std::int64_t total = 0;
@@ -1184,10 +1197,9 @@ class GFlip3D {
     } else {
       par::select_indices_to(ctx_, static_cast<std::size_t>(na), plp, cn, is_proposer);
       par::mark(ctx_, "flip: select proposers");
-      par::parallel_for_counted(ctx_, npb, cn, cast_vote);
-      par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) { ap[j] = accepted(j) ? 1 : 0; });
+      if (!voted) par::parallel_for_counted(ctx_, npb, cn, vote_of);
       par::select_indices_to(ctx_, static_cast<std::size_t>(npb), flp, cn + 1,
-                             [=] GDEL_LAMBDA(std::int64_t j) { return j < cn[0] && ap[j] != 0; });
+                             [=] GDEL_LAMBDA(std::int64_t j) { return j < cn[0] && accepted(j); });
       par::parallel_for(ctx_, npb + 1, [=] GDEL_LAMBDA(std::int64_t f) {
         o23[f] = f < cn[1] && prop_type(pp[plp[flp[f]]]) == 1 ? 1 : 0;
       });
@@ -1213,8 +1225,7 @@ class GFlip3D {
     }
     if (nfl > cfg_.max_flips_per_iteration) {  // the rest stand down (FlipConfig::max_flips_per_iteration)
       const std::int64_t keep = cfg_.max_flips_per_iteration;
-      par::parallel_for(ctx_, nfl - keep, [=] GDEL_LAMBDA(std::int64_t f) { ap[flp[keep + f]] = 0; });
-      nfl = keep;
+      nfl = keep;  // (their proposers, whose tets no flip stamps, stay active)
       n23 = off23.get(static_cast<std::size_t>(keep));  // (the offsets before `keep` stand)
     }
     // flips' proposer positions in A
@@ -1327,7 +1338,8 @@ class GFlip3D {
     };
     // next active set: the rejected proposers (the stuck tets among them) that no flip
     // took, and the flips' new tets, in slot order. Candidate c < np is proposer c, kept
-    // unless a flip took its tet (stamped by ExecuteFlip: left to that flip, or freed);
+    // unless a flip took its tet (stamped by ExecuteFlip: left to that flip, or freed; an
+    // accepted proposer's own flip took it);
     // c >= np is new tet (c - np) % 3 of flip (c - np) / 3 (-1: none). Each tet is the
     // candidate of exactly one c. By default the candidates' tets are listed, then
     // sorted: in a team (small iterations), and on the GPU in a large iteration where the
@@ -1338,7 +1350,6 @@ class GFlip3D {
     // in the same order; bench/RESULTS.md, session 52).
     auto candidate = [=] GDEL_LAMBDA(std::int64_t c) -> tid_t {
       if (c < np) {
-        if (ap[c]) return -1;
         const tid_t t = A[plp[c]];
         return (mark[t] & ~std::uint64_t(0xffffffff)) != stamp ? t : tid_t(-1);
       }
@@ -1770,6 +1781,7 @@ class GFlip3D {
   ProposeAt propose_at_ = propose_at_setting();
   int spread_block_ = spread_block_setting();
   bool split_exact_ = split_exact_setting();
+  bool vote_in_propose_ = vote_in_propose_setting();
   bool active_by_slots_ = par::knob_on("GDEL_ACTIVE_SLOTS");
   // insertion in SoS order (decide_sos_order): tets proposed so far, ties being counted
   // (counts_[5]), switched

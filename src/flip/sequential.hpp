@@ -545,10 +545,10 @@ class SequentialInsertion {
         for (int j = 0; j < nf && exit < 0; ++j) {
           const vid_t a = c.v[face_vertex(face[j], 0)], b = c.v[face_vertex(face[j], 1)];
           const vid_t d = c.v[face_vertex(face[j], 2)];
-          const bool with_inf = a == g_.inf || b == g_.inf || d == g_.inf;
+          const bool with_inf = g_.has_inf(a, b, d, q);
           int r = Geo::filter_answer(s[j]);
-          if (with_inf && g_.k_centroid) r = g_.orient_fast(a, b, d, q);  // (K is not the slot's double)
-          else if (r != par::kUndecided && with_inf) r = -r;                // as Geo::orient_fast
+          if (with_inf && g_.k_centroid) r = g_.orient_fast(a, b, d, q);          // (K is not the slot's double)
+          else if (r != par::kUndecided && with_inf) r = g_.inf_sign * r;  // as Geo::orient_fast
           if (settle(r, [&] { return g_.orient_exact(a, b, d, q, work_.data()); }) < 0) exit = face[j];
         }
         if (exit < 0) return t;

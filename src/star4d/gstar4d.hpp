@@ -77,8 +77,7 @@ void gstar4d(Context<B>& ctx, Buffer<double, B>& P, Buffer<std::int64_t, B>& sid
   const bool int_all =
       !kg.k_centroid && flip::all_integer_points(ctx, P.data(), weights, m + 1, geom::kQuarterScale);
   flip::Geo g{P.data(), sid.data(), static_cast<vid_t>(m), weights, int_points, int_all};
-  g.k_centroid = kg.k_centroid;
-  for (int i = 0; i < 4; ++i) g.kq[i] = kg.kq[i];
+  g.take_kernel_point(kg);
   StarStage<B> stage(ctx, g, m);
   stage.splay(ws.offsets.data(), ws.ids.data());
   ctx.synchronize();
