@@ -1750,11 +1750,20 @@ class GFlip3D {
         ctx_, g, u, und.data(), [=] GDEL_LAMBDA(std::int64_t i) { return walk(i, nullptr, false); },
         [=] GDEL_LAMBDA(std::int64_t i, double* work) { return walk(i, work, true); });
     par::mark(ctx_, "relocate: DAG walk");
-    // reset next[] for the consumed slots
-    par::parallel_for(ctx_, nrec, [=] GDEL_LAMBDA(std::int64_t f) {
-      for (int o = 0; o < 3; ++o)
-        if (rec[f].in[o] >= 0) next[rec[f].in[o]] = 0;
-    });
+    // next[] back to 0: where the log is long against the mesh, all of it (one sequential
+    // write of 8 bytes a slot) rather than the consumed slots (up to three random writes a
+    // record, each a 32-byte sector; GDEL_DAG_RESET=sparse/dense for measurements,
+    // bench/RESULTS.md, session 57)
+    const std::int64_t cap = static_cast<std::int64_t>(aux_key_.size());
+    if (dag_reset_ == DagReset::kDense || (dag_reset_ == DagReset::kAuto && 12 * nrec > cap)) {
+      aux_key_.memset(0);
+    } else {
+      par::parallel_for(ctx_, nrec, [=] GDEL_LAMBDA(std::int64_t f) {
+        for (int o = 0; o < 3; ++o)
+          if (rec[f].in[o] >= 0) next[rec[f].in[o]] = 0;
+      });
+    }
+    par::mark(ctx_, "relocate: reset DAG links");
     log_.clear();
     log_iters_.assign(1, 0);
   }
@@ -1782,6 +1791,13 @@ class GFlip3D {
   int spread_block_ = spread_block_setting();
   bool split_exact_ = split_exact_setting();
   bool vote_in_propose_ = vote_in_propose_setting();
+  enum class DagReset { kAuto, kSparse, kDense };
+  static DagReset dag_reset_setting() {
+    const char* e = std::getenv("GDEL_DAG_RESET");
+    const std::string v = e ? e : "";
+    return v == "sparse" ? DagReset::kSparse : v == "dense" ? DagReset::kDense : DagReset::kAuto;
+  }
+  DagReset dag_reset_ = dag_reset_setting();
   bool active_by_slots_ = par::knob_on("GDEL_ACTIVE_SLOTS");
   // insertion in SoS order (decide_sos_order): tets proposed so far, ties being counted
   // (counts_[5]), switched
