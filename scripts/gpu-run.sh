@@ -1654,6 +1654,34 @@ PY
     GDEL_PROFILE=1 bench s57a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_FLIP_TRACE=1 bench s57a_2e8 240 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s57b)  # session 57: votes cast in the proposing pass, the DAG links' dense reset (knobs off = the old passes), 1.5*10^8 on an H100, GPU tests
+    for r in 1 2; do
+      bench_old "s57b_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_VOTE_IN_PROPOSE=0 GDEL_DAG_RESET=sparse bench "s57b_e7_off$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s57b_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_VOTE_IN_PROPOSE=0 GDEL_DAG_RESET=sparse bench "s57b_e6_off$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s57b_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    GDEL_PROFILE=1 GDEL_VOTE_IN_PROPOSE=0 GDEL_DAG_RESET=sparse bench s57b_e7p_off 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s57b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    bench s57b_15e7 150 --dist uniform --n 150000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s57c)  # session 57: s57b with the accepted flags' pass back (old = s56b's binary), GPU tests of the flip loop
+    for r in 1 2 3; do
+      bench_old "s57c_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s57c_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    for r in 1 2; do
+      bench_old "s57c_e6_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s57c_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    GDEL_PROFILE=1 bench s57c_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench_old s57c_e7p_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    step gpu_gflip3d 200 "$tbin/gpu_gflip3d"
+    step gpu_gdel3d 200 "$tbin/gpu_gdel3d"
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
