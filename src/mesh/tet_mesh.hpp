@@ -31,6 +31,7 @@
 #include "mesh/conventions.hpp"
 #include "parallel/atomic.hpp"
 #include "parallel/primitives.hpp"
+#include "parallel/profile.hpp"
 
 namespace gdel::mesh {
 
@@ -265,8 +266,8 @@ class TetMesh {
   // sorted) are near each other in memory; returns old->new map (-1 for dead slots).
   // Keys lie in [0, dead_key) with dead_key < 2^31 (dead slots sort last under it).
   // shrink: as compact(). The temporaries: 16 bytes per slot during the sort, then the
-  // map (4 per slot) and one scratch array (16 per alive tet, none with shrink); see
-  // reorder_bytes().
+  // map (4 per slot), with gather() the sorted ids too (4 per slot), and one scratch array
+  // (16 per alive tet, none with shrink); see reorder_bytes().
   template <class Key>
   par::Buffer<tid_t, B> reorder(Key key, tid_t dead_key, bool shrink = false) {
     const std::int64_t n = size();
@@ -274,9 +275,9 @@ class TetMesh {
     par::Buffer<tid_t, B> k(*ctx_, len);  // the keys, then the map
     tid_t* kp = k.data();
     std::int64_t alive = 0;
+    par::Buffer<tid_t, B> ids(*ctx_, len);  // the old slots in sorted order
+    tid_t* ip = ids.data();
     {
-      par::Buffer<tid_t, B> ids(*ctx_, len);
-      tid_t* ip = ids.data();
       MeshView v = view();
       par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t t) {
         kp[t] = v.alive(static_cast<tid_t>(t)) ? key(v.tet[t]) : dead_key;
@@ -290,25 +291,40 @@ class TetMesh {
       const tid_t na = static_cast<tid_t>(alive);
       par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t j) { kp[ip[j]] = tid_t(j) < na ? tid_t(j) : tid_t(-1); });
     }
-    apply_remap(kp, alive, shrink);
+    if (gather()) {
+      apply_remap(kp, alive, shrink, ip);
+    } else {
+      ids.release();
+      apply_remap(kp, alive, shrink);
+    }
     return k;
   }
   // A bound on the bytes reorder() holds beyond the mesh: 16 per slot and the radix
   // sort's own scratch (below 4 per slot and 64 KiB: its histograms and look-back
-  // counters) during the sort, at most 20 per slot after it.
-  std::int64_t reorder_bytes() const { return 20 * (size() + 1) + (std::int64_t(1) << 16); }
+  // counters) during the sort, at most 20 per slot after it (24 with gather()).
+  std::int64_t reorder_bytes() const { return (gather() ? 24 : 20) * (size() + 1) + (std::int64_t(1) << 16); }
+  // reorder() moves each array by a gather (new slot j reads its old slot; writes in
+  // order, reads at random) instead of a scatter (old slot t writes its new one: 37
+  // partial sectors written at random per tet). GDEL_REORDER_GATHER=0: the scatter, for
+  // measurements (bench/RESULTS.md, session 57). The same mesh either way.
+  static bool gather() {
+    static const bool v = !par::knob_off("GDEL_REORDER_GATHER");
+    return v;
+  }
 
   // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
   // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
   // a time through one scratch array of the alive tets, copied back in place (shrink:
   // each array replaced by a new one of `alive` slots instead, the capacity).
-  void apply_remap(const tid_t* rm, std::int64_t alive, bool shrink = false) {
+  // from: the old slot of each new slot in [0, alive) (rm's inverse), where the caller has
+  // it: each array is then gathered instead of scattered.
+  void apply_remap(const tid_t* rm, std::int64_t alive, bool shrink = false, const tid_t* from = nullptr) {
     const std::int64_t n = size();
     par::Buffer<Tet, B> scratch(*ctx_, shrink ? 0 : static_cast<std::size_t>(std::max<std::int64_t>(alive, 1)));
-    remap_records(tet_, 1, alive, shrink, scratch, rm, [] GDEL_LAMBDA(const Tet& x) { return x; });
-    remap_records(opp_t_, 4, alive, shrink, scratch, rm, [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; });
-    remap_records(face_, 4, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
-    remap_records(state_, 1, alive, shrink, scratch, rm, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
+    remap_records(tet_, 1, alive, shrink, scratch, rm, from, [] GDEL_LAMBDA(const Tet& x) { return x; });
+    remap_records(opp_t_, 4, alive, shrink, scratch, rm, from, [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; });
+    remap_records(face_, 4, alive, shrink, scratch, rm, from, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
+    remap_records(state_, 1, alive, shrink, scratch, rm, from, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
     if (!shrink && n > alive) {  // the slots past the alive tets are dead
       std::uint8_t* st = state_.data();
       par::parallel_for(*ctx_, n - alive, [=] GDEL_LAMBDA(std::int64_t k) { st[alive + k] = 0; });
@@ -320,19 +336,27 @@ class TetMesh {
 
   // apply_remap's step for one array: buf's per-slot records of `per` elements moved to
   // their new slots (x: the element's new value), through the scratch or (shrink) into
-  // a new array of `alive` slots.
+  // a new array of `alive` slots; by slot t's new slot rm[t], or (from) by new slot j's
+  // old slot from[j].
   template <class T, class X>
   void remap_records(par::Buffer<T, B>& buf, std::int64_t per, std::int64_t alive, bool shrink,
-                     par::Buffer<Tet, B>& scratch, const tid_t* rm, X x) {
+                     par::Buffer<Tet, B>& scratch, const tid_t* rm, const tid_t* from, X x) {
     static_assert(alignof(T) <= alignof(Tet));  // (and per * sizeof(T) <= sizeof(Tet) for all four arrays)
     par::Buffer<T, B> nb(*ctx_, shrink ? static_cast<std::size_t>(std::max<std::int64_t>(per * alive, 1)) : 0);
     T* dst = shrink ? nb.data() : reinterpret_cast<T*>(scratch.data());
     const T* src = buf.data();
-    par::parallel_for(*ctx_, size(), [=] GDEL_LAMBDA(std::int64_t t) {
-      const tid_t d = rm[t];
-      if (d < 0) return;
-      for (std::int64_t i = 0; i < per; ++i) dst[per * std::int64_t(d) + i] = x(src[per * t + i]);
-    });
+    if (from) {
+      par::parallel_for(*ctx_, alive, [=] GDEL_LAMBDA(std::int64_t j) {
+        const std::int64_t t = from[j];
+        for (std::int64_t i = 0; i < per; ++i) dst[per * j + i] = x(src[per * t + i]);
+      });
+    } else {
+      par::parallel_for(*ctx_, size(), [=] GDEL_LAMBDA(std::int64_t t) {
+        const tid_t d = rm[t];
+        if (d < 0) return;
+        for (std::int64_t i = 0; i < per; ++i) dst[per * std::int64_t(d) + i] = x(src[per * t + i]);
+      });
+    }
     if (shrink)
       buf = std::move(nb);
     else
