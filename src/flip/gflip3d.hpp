@@ -1660,11 +1660,15 @@ class GFlip3D {
   // whether it sorted.
   bool reorder_tets(bool shrink) {
     auto& mem = ctx_.memory();
+    // (whether it sorts is decided by the scatter's bytes, so that the gather's 4 bytes a
+    // slot more never change which sorts run, nor so the triangulation: it moves the
+    // arrays only where those fit too)
     const bool fits = mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes()) <= mem.peak();
+    const bool gather = mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes(true)) <= mem.peak();
     if (trace_)
       std::fprintf(stderr, "gflip3d tet reordering: %s (%.1f MiB held + %.1f MiB needed, peak %.1f MiB)\n",
-                   fits ? "done" : "skipped", mem.current() / 1048576.0, mesh_.reorder_bytes() / 1048576.0,
-                   mem.peak() / 1048576.0);
+                   fits ? (gather ? "done (gather)" : "done (scatter)") : "skipped", mem.current() / 1048576.0,
+                   mesh_.reorder_bytes() / 1048576.0, mem.peak() / 1048576.0);
     if (!fits) return false;
     const vid_t inf = static_cast<vid_t>(n_);
     auto remap = mesh_.reorder(
@@ -1673,7 +1677,7 @@ class GFlip3D {
           for (int i = 0; i < 4; ++i) m = (t.v[i] != inf && t.v[i] < m) ? t.v[i] : m;
           return m;
         },
-        inf, shrink);
+        inf, shrink, gather);
     const tid_t* rm = remap.data();
     const vid_t* U = todo_.data();
     tid_t* vt = vert_tet_.data();

@@ -265,11 +265,12 @@ class TetMesh {
   // by smallest vertex id, so that tets near each other in space (points are curve
   // sorted) are near each other in memory; returns old->new map (-1 for dead slots).
   // Keys lie in [0, dead_key) with dead_key < 2^31 (dead slots sort last under it).
-  // shrink: as compact(). The temporaries: 16 bytes per slot during the sort, then the
-  // map (4 per slot), with gather() the sorted ids too (4 per slot), and one scratch array
-  // (16 per alive tet, none with shrink); see reorder_bytes().
+  // shrink: as compact(). gather: the arrays moved by a gather (gather_setting()). The
+  // temporaries: 16 bytes per slot during the sort, then the map (4 per slot), with the
+  // gather the sorted ids too (4 per slot), and one scratch array (16 per alive tet, none
+  // with shrink); see reorder_bytes().
   template <class Key>
-  par::Buffer<tid_t, B> reorder(Key key, tid_t dead_key, bool shrink = false) {
+  par::Buffer<tid_t, B> reorder(Key key, tid_t dead_key, bool shrink = false, bool gather = false) {
     const std::int64_t n = size();
     const std::size_t len = static_cast<std::size_t>(n + 1);
     par::Buffer<tid_t, B> k(*ctx_, len);  // the keys, then the map
@@ -291,7 +292,7 @@ class TetMesh {
       const tid_t na = static_cast<tid_t>(alive);
       par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t j) { kp[ip[j]] = tid_t(j) < na ? tid_t(j) : tid_t(-1); });
     }
-    if (gather()) {
+    if (gather && gather_setting()) {
       apply_remap(kp, alive, shrink, ip);
     } else {
       ids.release();
@@ -301,13 +302,16 @@ class TetMesh {
   }
   // A bound on the bytes reorder() holds beyond the mesh: 16 per slot and the radix
   // sort's own scratch (below 4 per slot and 64 KiB: its histograms and look-back
-  // counters) during the sort, at most 20 per slot after it (24 with gather()).
-  std::int64_t reorder_bytes() const { return (gather() ? 24 : 20) * (size() + 1) + (std::int64_t(1) << 16); }
-  // reorder() moves each array by a gather (new slot j reads its old slot; writes in
-  // order, reads at random) instead of a scatter (old slot t writes its new one: 37
-  // partial sectors written at random per tet). GDEL_REORDER_GATHER=0: the scatter, for
-  // measurements (bench/RESULTS.md, session 57). The same mesh either way.
-  static bool gather() {
+  // counters) during the sort, at most 20 per slot after it (24 with the gather).
+  std::int64_t reorder_bytes(bool gather = false) const {
+    return (gather ? 24 : 20) * (size() + 1) + (std::int64_t(1) << 16);
+  }
+  // reorder(..., gather = true) moves each array by a gather (new slot j reads its old
+  // slot; writes in order, reads at random) instead of a scatter (old slot t writes its
+  // new one: 4 partial sectors written at random per tet). GDEL_REORDER_GATHER=0: the
+  // scatter always, for measurements (bench/RESULTS.md, session 57). The same mesh
+  // either way.
+  static bool gather_setting() {
     static const bool v = !par::knob_off("GDEL_REORDER_GATHER");
     return v;
   }

@@ -8,9 +8,10 @@
 namespace gdel::test {
 
 // Two tets glued along a face, built through kernels, with slot claims/releases,
-// compaction and the invariant checker.
+// compaction and the invariant checker; the sorts move the arrays by a gather or
+// (gather false) a scatter (TetMesh::reorder).
 template <class B>
-void tet_mesh_cases(par::Context<B>& ctx) {
+void tet_mesh_cases(par::Context<B>& ctx, bool gather) {
   using namespace gdel::mesh;
   TetMesh<B> m(ctx);
   SlotSource src = m.claim(2);
@@ -91,7 +92,7 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   });
   // reorder by a key (largest first vertex first): slots follow the key, links follow the slots
   {
-    auto rmk = m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(1000 - t.v[0]); }, 1024).to_host();
+    auto rmk = m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(1000 - t.v[0]); }, 1024, false, gather).to_host();
     EXPECT_EQ(m.size(), 3);
     EXPECT_EQ(rmk[2], -1);  // dead slot dropped
     auto tv = m.tets().to_host();
@@ -109,7 +110,7 @@ void tet_mesh_cases(par::Context<B>& ctx) {
     // old slot 0's face 2
     EXPECT_EQ(m.face_bytes().to_host()[4 * 1 + 2] >> MeshView::kFlagShift, kSpecial | kSphereFail);
     // and back to slot order for the compaction checks below
-    m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); }, 4);
+    m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); }, 4, false, gather);
   }
   auto remap = m.compact().to_host();
   EXPECT_EQ(m.size(), 3);
@@ -118,7 +119,7 @@ void tet_mesh_cases(par::Context<B>& ctx) {
   EXPECT_EQ(opp[4 * 1 + 3], pack_facet(2, 3));
   EXPECT_EQ(opp[4 * 2 + 3], pack_facet(1, 3));
   // sorted with shrink (the output's form): the capacity is cut to the alive tets
-  m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0]); }, 1024, /*shrink=*/true);
+  m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0]); }, 1024, /*shrink=*/true, gather);
   EXPECT_EQ(m.size(), 3);
   EXPECT_EQ(m.capacity(), 3);
   auto ts = m.tets().to_host();
