@@ -1668,10 +1668,10 @@ PY
     step gpu_predicates 60 "$tbin/gpu_predicates"
     bench s57b_15e7 150 --dist uniform --n 150000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
-  s57c)  # session 57: s57b with the accepted flags' pass back (old = s56b's binary), the tet sort's gather (GDEL_REORDER_GATHER=0: scatter), GPU tests
+  s57c)  # session 57 (not run: no device lent): s57b with the accepted flags' pass back (old = s56b's binary), the tet sort's gather (GDEL_REORDER_GATHER=1), GPU tests
     for r in 1 2 3; do
       bench_old "s57c_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-      GDEL_REORDER_GATHER=0 bench "s57c_e7_scatter$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_REORDER_GATHER=1 bench "s57c_e7_gather$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
       bench "s57c_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     done
     for r in 1 2; do
@@ -1680,11 +1680,11 @@ PY
     done
     GDEL_PROFILE=1 bench s57c_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench_old s57c_e7p_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 GDEL_REORDER_GATHER=0 bench s57c_e7p_scatter 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_REORDER_GATHER=1 bench s57c_e7p_gather 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     step gpu_gflip3d 200 "$tbin/gpu_gflip3d"
     step gpu_gdel3d 200 "$tbin/gpu_gdel3d"
     step gpu_mesh 60 "$tbin/gpu_mesh"
-    GDEL_TET_REORDER=1 GDEL_REORDER_EVERY=1 step gpu_gflip3d_sorted 200 "$tbin/gpu_gflip3d"
+    GDEL_REORDER_GATHER=1 GDEL_REORDER_EVERY=1 step gpu_gflip3d_gather 200 "$tbin/gpu_gflip3d"
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

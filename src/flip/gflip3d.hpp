@@ -1661,10 +1661,11 @@ class GFlip3D {
   bool reorder_tets(bool shrink) {
     auto& mem = ctx_.memory();
     // (whether it sorts is decided by the scatter's bytes, so that the gather's 4 bytes a
-    // slot more never change which sorts run, nor so the triangulation: it moves the
-    // arrays only where those fit too)
+    // slot more never change which sorts run, nor so the triangulation: with
+    // GDEL_REORDER_GATHER=1 it moves the arrays only where those fit too)
     const bool fits = mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes()) <= mem.peak();
-    const bool gather = mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes(true)) <= mem.peak();
+    const bool gather = mesh::TetMesh<B>::gather_setting() &&
+                        mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes(true)) <= mem.peak();
     if (trace_)
       std::fprintf(stderr, "gflip3d tet reordering: %s (%.1f MiB held + %.1f MiB needed, peak %.1f MiB)\n",
                    fits ? (gather ? "done (gather)" : "done (scatter)") : "skipped", mem.current() / 1048576.0,

@@ -265,7 +265,7 @@ class TetMesh {
   // by smallest vertex id, so that tets near each other in space (points are curve
   // sorted) are near each other in memory; returns old->new map (-1 for dead slots).
   // Keys lie in [0, dead_key) with dead_key < 2^31 (dead slots sort last under it).
-  // shrink: as compact(). gather: the arrays moved by a gather (gather_setting()). The
+  // shrink: as compact(). gather: the arrays move by a gather (gather_setting()). The
   // temporaries: 16 bytes per slot during the sort, then the map (4 per slot), with the
   // gather the sorted ids too (4 per slot), and one scratch array (16 per alive tet, none
   // with shrink); see reorder_bytes().
@@ -292,7 +292,7 @@ class TetMesh {
       const tid_t na = static_cast<tid_t>(alive);
       par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t j) { kp[ip[j]] = tid_t(j) < na ? tid_t(j) : tid_t(-1); });
     }
-    if (gather && gather_setting()) {
+    if (gather) {
       apply_remap(kp, alive, shrink, ip);
     } else {
       ids.release();
@@ -308,11 +308,11 @@ class TetMesh {
   }
   // reorder(..., gather = true) moves each array by a gather (new slot j reads its old
   // slot; writes in order, reads at random) instead of a scatter (old slot t writes its
-  // new one: 4 partial sectors written at random per tet). GDEL_REORDER_GATHER=0: the
-  // scatter always, for measurements (bench/RESULTS.md, session 57). The same mesh
-  // either way.
+  // new one: 4 partial sectors written at random per tet). The same mesh either way.
+  // Whether gFlip3D asks for it: off unless GDEL_REORDER_GATHER=1, a study whose device
+  // run (plan s57c) has not run yet (bench/RESULTS.md, session 57).
   static bool gather_setting() {
-    static const bool v = !par::knob_off("GDEL_REORDER_GATHER");
+    static const bool v = par::knob_on("GDEL_REORDER_GATHER");
     return v;
   }
 
