@@ -31,7 +31,6 @@
 #include "mesh/conventions.hpp"
 #include "parallel/atomic.hpp"
 #include "parallel/primitives.hpp"
-#include "parallel/profile.hpp"
 
 namespace gdel::mesh {
 
@@ -265,7 +264,7 @@ class TetMesh {
   // by smallest vertex id, so that tets near each other in space (points are curve
   // sorted) are near each other in memory; returns old->new map (-1 for dead slots).
   // Keys lie in [0, dead_key) with dead_key < 2^31 (dead slots sort last under it).
-  // shrink: as compact(). gather: the arrays move by a gather (gather_setting()). The
+  // shrink: as compact(). gather: the arrays move by a gather (see reorder_bytes). The
   // temporaries: 16 bytes per slot during the sort, then the map (4 per slot), with the
   // gather the sorted ids too (4 per slot), and one scratch array (16 per alive tet, none
   // with shrink); see reorder_bytes().
@@ -308,13 +307,8 @@ class TetMesh {
   }
   // reorder(..., gather = true) moves each array by a gather (new slot j reads its old
   // slot; writes in order, reads at random) instead of a scatter (old slot t writes its
-  // new one: 4 partial sectors written at random per tet). The same mesh either way.
-  // Whether gFlip3D asks for it: off unless GDEL_REORDER_GATHER=1, a study whose device
-  // run (plan s57c) has not run yet (bench/RESULTS.md, session 57).
-  static bool gather_setting() {
-    static const bool v = par::knob_on("GDEL_REORDER_GATHER");
-    return v;
-  }
+  // new one: 4 partial sectors written at random per tet). The same mesh either way
+  // (GFlip3D::reorder_gather_ says when gFlip3D asks for it).
 
   // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
   // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
