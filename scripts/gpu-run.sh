@@ -1686,6 +1686,31 @@ PY
     step gpu_mesh 60 "$tbin/gpu_mesh"
     GDEL_REORDER_GATHER=1 GDEL_REORDER_EVERY=1 step gpu_gflip3d_gather 200 "$tbin/gpu_gflip3d"
     ;;
+  s58a)  # session 58: plan s57c on HEAD's binaries, with the knobs for the old passes ("off": GDEL_VOTE_IN_PROPOSE=0 GDEL_DAG_RESET=sparse) instead of an old binary; the tet sort's gather (GDEL_REORDER_GATHER=1)
+    for r in 1 2 3; do
+      GDEL_VOTE_IN_PROPOSE=0 GDEL_DAG_RESET=sparse bench "s58a_e7_off$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_REORDER_GATHER=1 bench "s58a_e7_gather$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s58a_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    for r in 1 2; do
+      GDEL_REORDER_GATHER=1 bench "s58a_e6_gather$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s58a_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    GDEL_PROFILE=1 bench s58a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_VOTE_IN_PROPOSE=0 GDEL_DAG_RESET=sparse bench s58a_e7p_off 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_REORDER_GATHER=1 bench s58a_e7p_gather 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    step gpu_mesh 60 "$tbin/gpu_mesh"
+    GDEL_REORDER_GATHER=1 GDEL_REORDER_EVERY=1 step gpu_gflip3d_gather 200 "$tbin/gpu_gflip3d"
+    ;;
+  s58b)  # session 58: every GPU test on HEAD's binaries
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    ;;
+  s58c)  # session 58: 2*10^8 uniform on an H200 (the estimate, 96.7 GB, admits it there), then uniform 10^7 for the H200's figure
+    bench s58c_2e8 400 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s58c_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    GDEL_REORDER_GATHER=1 bench s58c_e7_gather 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
