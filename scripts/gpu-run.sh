@@ -1706,10 +1706,14 @@ PY
     gpu_tests
     step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
-  s58c)  # session 58: 2*10^8 uniform on an H200 (the estimate, 96.7 GB, admits it there), then uniform 10^7 for the H200's figure
+  s58c)  # session 58: HEAD (the gather by default): gpu_gdel3d, uniform 10^7 and 10^6 against the scatter (GDEL_REORDER_GATHER=0), then 2*10^8 uniform (on an H200 the estimate, 96.7 GB, admits it)
+    step gpu_gdel3d 200 "$tbin/gpu_gdel3d"
+    for r in 1 2; do
+      bench "s58c_e7_gather$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_REORDER_GATHER=0 bench "s58c_e7_scatter$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    bench s58c_e6 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     bench s58c_2e8 400 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
-    bench s58c_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    GDEL_REORDER_GATHER=1 bench s58c_e7_gather 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
