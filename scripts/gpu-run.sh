@@ -1706,13 +1706,17 @@ PY
     gpu_tests
     step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
-  s58c)  # session 58: HEAD (the gather by default): gpu_gdel3d, uniform 10^7 and 10^6 against the scatter (GDEL_REORDER_GATHER=0), then 2*10^8 uniform (on an H200 the estimate, 96.7 GB, admits it)
+  s58c)  # session 58: HEAD (the gather by default): gpu_gdel3d, uniform 10^7 and 10^6 against the scatter (GDEL_REORDER_GATHER=0) and session 52's GDEL_REORDER_SHARE=8, then 2*10^8 uniform (on an H200 the estimate, 96.7 GB, admits it)
     step gpu_gdel3d 200 "$tbin/gpu_gdel3d"
-    for r in 1 2; do
+    for r in 1 2 3; do
       bench "s58c_e7_gather$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
       GDEL_REORDER_GATHER=0 bench "s58c_e7_scatter$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_REORDER_SHARE=8 bench "s58c_e7_share8_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     done
-    bench s58c_e6 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    for r in 1 2; do
+      bench "s58c_e6_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_REORDER_SHARE=8 bench "s58c_e6_share8_$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
     bench s58c_2e8 400 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
   cmd)
