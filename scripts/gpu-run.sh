@@ -1719,6 +1719,10 @@ PY
     done
     bench s58c_2e8 400 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s58d)  # session 58: uniform 2*10^8 on an H200 (refused at once on an H100 by the estimate), then uniform 10^7 for the H200's figure
+    bench s58d_2e8 400 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s58d_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
