@@ -264,10 +264,13 @@ class TetMesh {
   // by smallest vertex id, so that tets near each other in space (points are curve
   // sorted) are near each other in memory; returns old->new map (-1 for dead slots).
   // Keys lie in [0, dead_key) with dead_key < 2^31 (dead slots sort last under it).
-  // shrink: as compact(). gather: the arrays move by a gather (see reorder_bytes). The
-  // temporaries: 16 bytes per slot during the sort, then the map (4 per slot), with the
-  // gather the sorted ids too (4 per slot), and one scratch array (16 per alive tet, none
-  // with shrink); see reorder_bytes().
+  // shrink: as compact(). gather: each array moves by a gather (new slot j reads its old
+  // slot; writes in order, reads at random) instead of a scatter (old slot t writes its
+  // new one: 4 partial sectors written at random per tet); the same mesh either way
+  // (GFlip3D::reorder_gather_ says when gFlip3D asks for it). The temporaries: 16 bytes
+  // per slot during the sort, then the map (4 per slot), with the gather the sorted ids
+  // too (4 per slot), and one scratch array (16 per alive tet, none with shrink); see
+  // reorder_bytes().
   template <class Key>
   par::Buffer<tid_t, B> reorder(Key key, tid_t dead_key, bool shrink = false, bool gather = false) {
     const std::int64_t n = size();
@@ -305,11 +308,6 @@ class TetMesh {
   std::int64_t reorder_bytes(bool gather = false) const {
     return (gather ? 24 : 20) * (size() + 1) + (std::int64_t(1) << 16);
   }
-  // reorder(..., gather = true) moves each array by a gather (new slot j reads its old
-  // slot; writes in order, reads at random) instead of a scatter (old slot t writes its
-  // new one: 4 partial sectors written at random per tet). The same mesh either way
-  // (GFlip3D::reorder_gather_ says when gFlip3D asks for it).
-
   // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
   // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
   // a time through one scratch array of the alive tets, copied back in place (shrink:
