@@ -1723,6 +1723,10 @@ PY
     bench s58d_2e8 400 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     bench s58d_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
+  s58e)  # session 58: gpu_gflip3d and gpu_mesh with the gather as the default (s58c ran gpu_gdel3d)
+    step gpu_gflip3d 200 "$tbin/gpu_gflip3d"
+    step gpu_mesh 60 "$tbin/gpu_mesh"
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
