@@ -1727,6 +1727,24 @@ PY
     step gpu_gflip3d 200 "$tbin/gpu_gflip3d"
     step gpu_mesh 60 "$tbin/gpu_mesh"
     ;;
+  s59a)  # session 59: one 32-byte record a tet (vertices + neighbour tets): every GPU test, then uniform 10^8 (peak B/point) with GDEL_PROFILE
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    GDEL_FLIP_TRACE=1 bench s59a_e6_trace 60 --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s59a_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s59b)  # session 59: the records against the split arrays (gdel-bench-old: binaries of aba1c6d) in one call: uniform 10^7 x3, 10^6 uniform/grid/sphere x2, profiles
+    for r in 1 2 3; do
+      bench_old "s59b_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s59b_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    for r in 1 2; do
+      bench_old "s59b_e6_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s59b_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    GDEL_PROFILE=1 bench s59b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench_old s59b_e7p_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -90,14 +90,18 @@ struct DeviceOutput {
     par::sort_keys(ctx, ap, nfv);  // ascending, as Triangulation::failed_vertices
     res->failed_vertices = std::move(a);
   }
+  // One array at a time, each released once copied (the tets may sit in the larger
+  // storage of the mesh's records: TetMesh::take_tets).
   void tets(par::Buffer<std::int32_t, par::Cuda>& tv, par::Buffer<std::int32_t, par::Cuda>& tn, Triangulation&) {
     auto& ctx = tv.context();
-    auto a = allocate<std::int32_t>(&ctx, device, static_cast<I64>(tv.size()));
     auto b = allocate<std::int32_t>(&ctx, device, static_cast<I64>(tn.size()));
-    if (tv.size())
-      GDEL_CUDA_CHECK(cudaMemcpyAsync(a.data(), tv.data(), tv.bytes(), cudaMemcpyDeviceToDevice, ctx.stream()));
     if (tn.size())
       GDEL_CUDA_CHECK(cudaMemcpyAsync(b.data(), tn.data(), tn.bytes(), cudaMemcpyDeviceToDevice, ctx.stream()));
+    tn.release();
+    auto a = allocate<std::int32_t>(&ctx, device, static_cast<I64>(tv.size()));
+    if (tv.size())
+      GDEL_CUDA_CHECK(cudaMemcpyAsync(a.data(), tv.data(), tv.bytes(), cudaMemcpyDeviceToDevice, ctx.stream()));
+    tv.release();
     res->tets = std::move(a);
     res->neighbors = std::move(b);
   }

@@ -228,17 +228,9 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 t) { fp[t] = flip::Geo::inf_slot(mv.tet[t].v, inf) < 0 ? 1 : 0; });
   const tid_t nfin = par::counts_to_offsets(ctx, fp, static_cast<std::size_t>(nt));
   // The mesh is consumed one array at a time, so that the output never sits beside
-  // the whole mesh.
+  // the whole mesh: the neighbours first, then the tets written over the records.
   mesh.state().release();
   mesh.release_faces();  // (the neighbours below: their tets alone)
-  Buffer<std::int32_t, B> tv(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
-  std::int32_t* tvp = tv.data();
-  const I64* sp = sid.data();
-  par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 t) {
-    if (fp[t + 1] == fp[t]) return;  // infinite tet
-    for (int i = 0; i < 4; ++i) tvp[4 * fp[t] + i] = static_cast<std::int32_t>(sp[mv.tet[t].v[i]]);
-  });
-  mesh.tets().release();
   Buffer<std::int32_t, B> tn(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
   std::int32_t* tnp = tn.data();
   par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 t) {
@@ -249,7 +241,9 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
       tnp[4 * d + i] = (u < 0 || fp[u + 1] == fp[u]) ? -1 : fp[u];
     }
   });
-  mesh.release_opp();
+  const I64* sp = sid.data();
+  Buffer<std::int32_t, B> tv = mesh.take_tets(fp, 4 * std::max<I64>(nfin, 1),
+                                              [=] GDEL_LAMBDA(vid_t v) { return static_cast<std::int32_t>(sp[v]); });
   tv.resize(static_cast<std::size_t>(4 * nfin));
   tn.resize(static_cast<std::size_t>(4 * nfin));
   par::mark(ctx, "output: finite tets, input ids");

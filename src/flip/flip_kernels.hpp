@@ -572,8 +572,7 @@ GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t 
     }
     Tet t;
     flip_new_tet<Type>(r, a, t.v);
-    m.tet[out[a]] = t;
-    m.put_adj(out[a], nt, nf, fl);
+    m.put_tet(out[a], t, nt, nf, fl);
     m.state[out[a]] = mesh::kAlive | mesh::kChanged;
   }
 }

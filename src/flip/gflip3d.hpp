@@ -351,7 +351,7 @@ class GFlip3D {
                  Buffer<tid_t, B>&& vert_tet, Buffer<vid_t, B>&& todo) {
     inv_scale_ = inverse_scale();
     mesh_.reserve(std::max<std::int64_t>(initial_slots(), 2 * nt + 64));  // fresh slots are dead
-    par::detail::Memory<B>::copy(ctx_, mesh_.tets().data(), tets.data(), static_cast<std::size_t>(nt) * sizeof(mesh::Tet));
+    mesh_.set_tets_from(tets.data(), nt);
     mesh_.set_opp_from(opp.data(), 4 * nt);  // (face flags cleared)
     par::fill(ctx_, mesh_.state().data(), static_cast<std::size_t>(nt), std::uint8_t(mesh::kAlive));
     mesh_.set_size(nt);
@@ -532,8 +532,10 @@ class GFlip3D {
             if (shared == 3) opp[4 * t + i] = pack_facet(u, j);
           }
     mesh_.reserve(locate_points ? initial_slots() : 5);  // fresh slots are dead
-    par::detail::Memory<B>::from_host(ctx_, mesh_.tets().data(), tets.data(), 5 * sizeof(mesh::Tet));
     {
+      Buffer<mesh::Tet, B> tb(ctx_);
+      tb.assign(tets.data(), 5);
+      mesh_.set_tets_from(tb.data(), 5);
       Buffer<fid_t, B> ob(ctx_);
       ob.assign(opp);
       mesh_.set_opp_from(ob.data(), 20);  // (face flags cleared)
@@ -1662,13 +1664,18 @@ class GFlip3D {
     auto& mem = ctx_.memory();
     // (whether it sorts is decided by the scatter's bytes, so that the gather's 4 bytes a
     // slot more never change which sorts run, nor so the triangulation: it moves the
-    // arrays by the gather only where those fit too)
-    const bool fits = mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes()) <= mem.peak();
-    const bool gather = reorder_gather_ &&
-                        mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes(true)) <= mem.peak();
+    // arrays by the gather only where those fit too; the same for the records moved whole,
+    // 16 bytes a slot more than as two halves)
+    auto fit = [&](bool gather, bool whole) {
+      return mem.current() + static_cast<std::size_t>(mesh_.reorder_bytes(gather, whole)) <= mem.peak();
+    };
+    const bool fits = fit(false, false);
+    const bool gather = reorder_gather_ && fit(true, false);
+    const bool whole = fit(gather, true);
     if (trace_)
-      std::fprintf(stderr, "gflip3d tet reordering: %s (%.1f MiB held + %.1f MiB needed, peak %.1f MiB)\n",
-                   fits ? (gather ? "done (gather)" : "done (scatter)") : "skipped", mem.current() / 1048576.0,
+      std::fprintf(stderr, "gflip3d tet reordering: %s%s (%.1f MiB held + %.1f MiB needed, peak %.1f MiB)\n",
+                   fits ? (gather ? "done (gather" : "done (scatter") : "skipped",
+                   fits ? (whole ? ", whole records)" : ", records in halves)") : "", mem.current() / 1048576.0,
                    mesh_.reorder_bytes() / 1048576.0, mem.peak() / 1048576.0);
     if (!fits) return false;
     const vid_t inf = static_cast<vid_t>(n_);
@@ -1678,7 +1685,7 @@ class GFlip3D {
           for (int i = 0; i < 4; ++i) m = (t.v[i] != inf && t.v[i] < m) ? t.v[i] : m;
           return m;
         },
-        inf, shrink, gather);
+        inf, shrink, gather, whole);
     const tid_t* rm = remap.data();
     const vid_t* U = todo_.data();
     tid_t* vt = vert_tet_.data();

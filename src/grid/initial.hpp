@@ -306,11 +306,12 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   tid_t* vt = vert_tet.data();
   Buffer<std::uint8_t, B> state(ctx, static_cast<std::size_t>(ntot));
   par::fill(ctx, state.data(), static_cast<std::size_t>(ntot), std::uint8_t(mesh::kAlive));
-  // the mesh's split adjacency (neighbour tet; its face in the face byte, flags clear)
-  // for the walks
-  Buffer<tid_t, B> opp_t(ctx, static_cast<std::size_t>(4 * ntot));
+  // the mesh in gFlip3D's layout (records of vertices and neighbour tets; the neighbours'
+  // faces in the face bytes, flags clear) for the walks
+  Buffer<mesh::TetRec, B> rec(ctx, static_cast<std::size_t>(ntot));
   Buffer<std::uint8_t, B> face(ctx, static_cast<std::size_t>(4 * ntot));
-  const mesh::MeshView mv{T, opp_t.data(), face.data(), state.data()};
+  const mesh::MeshView mv(rec.data(), face.data(), state.data());
+  par::parallel_for(ctx, ntot, [=] GDEL_LAMBDA(std::int64_t t) { mv.tet[t] = T[t]; });
   par::parallel_for(ctx, 4 * ntot, [=] GDEL_LAMBDA(std::int64_t f) { mv.set_opp_flags(f, O[f], 0); });
   const flip::Geo g = alg.geo();
   auto locate = [=] GDEL_LAMBDA(std::int64_t q, double* work, bool exact) -> bool {

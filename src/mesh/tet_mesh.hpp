@@ -1,12 +1,15 @@
-// Tetrahedral mesh in structure-of-arrays form on a backend, for the flipping and
-// repair stages. See mesh/conventions.hpp for the combinatorial conventions.
+// Tetrahedral mesh on a backend, for the flipping and repair stages. See
+// mesh/conventions.hpp for the combinatorial conventions.
 //
-//   tet[t]    4 vertex ids (internal ids; kInfinite for the point at infinity)
-//   opp[4t+i] the neighbour across face i as a packed facet (t' << 2 | i'), or -1;
-//             stored as the tet t' (opp_t, 4 bytes, kNoTet for none) and its face i'
-//             (bits 0-1 of the face byte below): 4 bytes and 2 bits instead of a 64-bit
-//             packed facet, which tet-face counts past 2^31 would need (MeshView::opp /
-//             set_opp pack and unpack)
+//   rec[t]    one 32-byte aligned record a tet slot (one L2 sector):
+//     .t      4 vertex ids (internal ids; kInfinite for the point at infinity)
+//     .n[i]   the neighbour tet across face i (kNoTet: none)
+//             The neighbour across face i as a packed facet (t' << 2 | i'), or -1, is
+//             that tet t' and its face i' (bits 0-1 of the face byte below): 4 bytes and
+//             2 bits instead of a 64-bit packed facet, which tet-face counts past 2^31
+//             would need (MeshView::opp / set_opp pack and unpack). A tet's vertices and
+//             neighbours in one record: the flips read a tet and its neighbours in one
+//             sector and write a new tet as one whole sector (bench/RESULTS.md, session 59)
 //   face[4t+i] the face byte: bits 0-1 the neighbour's face i', bits 2-4 the face's
 //             FaceFlag bits; one byte per face, so that threads owning different faces
 //             of a tet never share a word, and one array where the neighbour's face and
@@ -38,6 +41,24 @@ struct alignas(16) Tet {
   vid_t v[4];
 };
 
+// A tet slot's record: its vertices and its neighbour tets (see the top of this file).
+struct alignas(32) TetRec {
+  Tet t;
+  tid_t n[4];
+};
+static_assert(sizeof(TetRec) == 32);
+
+// MeshView's indexers into the records: tet[t] the vertices of slot t, opp_t[k] the
+// neighbour tet across face k = 4t+i.
+struct TetsOf {
+  TetRec* r;
+  GDEL_HD Tet& operator[](std::int64_t t) const { return r[t].t; }
+};
+struct NeighboursOf {
+  TetRec* r;
+  GDEL_HD tid_t& operator[](std::int64_t k) const { return r[k >> 2].n[k & 3]; }
+};
+
 enum TetState : std::uint8_t {
   kAlive = 1,
   kChanged = 2,   // created or modified since last checked: its faces need checking
@@ -53,10 +74,14 @@ enum FaceFlag : std::uint8_t {
 
 // Plain pointers for use inside kernels (trivially copyable).
 struct MeshView {
-  Tet* tet;
-  tid_t* opp_t;         // neighbour tet across face k = 4t+i (kNoTet: none)
+  TetRec* rec;
   std::uint8_t* face;   // face byte of face k: its neighbour's face (bits 0-1), FaceFlag bits (2-4)
   std::uint8_t* state;
+  TetsOf tet;           // tet[t]: rec[t].t
+  NeighboursOf opp_t;   // opp_t[k]: neighbour tet across face k = 4t+i (kNoTet: none)
+
+  MeshView() = default;
+  GDEL_HD MeshView(TetRec* r, std::uint8_t* f, std::uint8_t* s) : rec(r), face(f), state(s), tet{r}, opp_t{r} {}
 
   static constexpr int kFlagShift = 2;
   static constexpr std::uint8_t kFaceMask = 3;
@@ -81,13 +106,14 @@ struct MeshView {
   }
 
   // A tet's four neighbour tets, their faces and its face flags, each as one access (16
-  // and 4 bytes: per tet the arrays are 16- and 4-byte aligned) instead of four.
+  // and 4 bytes: per tet the record's half and the face bytes are 16- and 4-byte
+  // aligned) instead of four.
   GDEL_HD void get_opp_tets(tid_t t, tid_t nt[4]) const {
 #if defined(__CUDA_ARCH__)
-    const int4 q = *reinterpret_cast<const int4*>(opp_t + 4 * std::int64_t(t));
+    const int4 q = *reinterpret_cast<const int4*>(rec[t].n);
     nt[0] = q.x, nt[1] = q.y, nt[2] = q.z, nt[3] = q.w;
 #else
-    std::memcpy(nt, opp_t + 4 * std::int64_t(t), 4 * sizeof(tid_t));
+    std::memcpy(nt, rec[t].n, 4 * sizeof(tid_t));
 #endif
   }
   GDEL_HD void get_face_bytes(tid_t t, std::uint8_t b[4]) const {
@@ -113,10 +139,28 @@ struct MeshView {
     std::uint8_t b[4];
     for (int i = 0; i < 4; ++i) b[i] = face_byte(nf[i], fl[i]);
 #if defined(__CUDA_ARCH__)
-    *reinterpret_cast<int4*>(opp_t + k) = make_int4(nt[0], nt[1], nt[2], nt[3]);
+    *reinterpret_cast<int4*>(rec[t].n) = make_int4(nt[0], nt[1], nt[2], nt[3]);
     *reinterpret_cast<uchar4*>(face + k) = make_uchar4(b[0], b[1], b[2], b[3]);
 #else
-    std::memcpy(opp_t + k, nt, 4 * sizeof(tid_t));
+    std::memcpy(rec[t].n, nt, 4 * sizeof(tid_t));
+    std::memcpy(face + k, b, 4);
+#endif
+  }
+  // A whole new tet: its vertices and neighbours (the record's two halves, back to back,
+  // so the sector is written whole), then its face bytes.
+  GDEL_HD void put_tet(tid_t t, const Tet& x, const tid_t nt[4], const std::uint8_t nf[4],
+                       const std::uint8_t fl[4]) const {
+    const std::int64_t k = 4 * std::int64_t(t);
+    std::uint8_t b[4];
+    for (int i = 0; i < 4; ++i) b[i] = face_byte(nf[i], fl[i]);
+#if defined(__CUDA_ARCH__)
+    int4* r = reinterpret_cast<int4*>(rec + t);
+    r[0] = make_int4(x.v[0], x.v[1], x.v[2], x.v[3]);
+    r[1] = make_int4(nt[0], nt[1], nt[2], nt[3]);
+    *reinterpret_cast<uchar4*>(face + k) = make_uchar4(b[0], b[1], b[2], b[3]);
+#else
+    rec[t].t = x;
+    std::memcpy(rec[t].n, nt, 4 * sizeof(tid_t));
     std::memcpy(face + k, b, 4);
 #endif
   }
@@ -150,10 +194,10 @@ template <class B>
 class TetMesh {
  public:
   explicit TetMesh(par::Context<B>& ctx)
-      : ctx_(&ctx), tet_(ctx), opp_t_(ctx), face_(ctx), state_(ctx), free_(ctx) {}
+      : ctx_(&ctx), rec_(ctx), face_(ctx), state_(ctx), free_(ctx) {}
 
   par::Context<B>& context() { return *ctx_; }
-  std::int64_t capacity() const { return static_cast<std::int64_t>(tet_.size()); }
+  std::int64_t capacity() const { return static_cast<std::int64_t>(rec_.size()); }
 
   std::int64_t size() const { return size_; }
   std::int64_t free_count() const { return free_count_; }
@@ -166,7 +210,7 @@ class TetMesh {
   // Capacity for at least n slots; contents kept; new slots are free and dead. Growth
   // is by a quarter at least (amortised), not by half: the mesh is most of a run's
   // memory, and each array is moved alone, so a growth step needs its largest array
-  // (the neighbour tets) once more, 1.25 times over.
+  // (the records, 32 bytes a slot) once more, 1.25 times over.
   void reserve(std::int64_t n) {
     std::int64_t old = capacity();
     if (n <= old) return;
@@ -175,8 +219,7 @@ class TetMesh {
       buf.reserve(static_cast<std::size_t>(per * cap));
       buf.resize(static_cast<std::size_t>(per * cap));
     };
-    grow(tet_, 1);
-    grow(opp_t_, 4);
+    grow(rec_, 1);
     grow(face_, 4);
     grow(state_, 1);
     std::uint8_t* st = state_.data();
@@ -225,8 +268,7 @@ class TetMesh {
     using M = par::detail::Memory<B>;
     const std::int64_t n = o.size_;
     reserve(n);
-    M::copy(*ctx_, tet_.data(), o.tet_.data(), static_cast<std::size_t>(n) * sizeof(Tet));
-    M::copy(*ctx_, opp_t_.data(), o.opp_t_.data(), static_cast<std::size_t>(4 * n) * sizeof(tid_t));
+    M::copy(*ctx_, rec_.data(), o.rec_.data(), static_cast<std::size_t>(n) * sizeof(TetRec));
     M::copy(*ctx_, face_.data(), o.face_.data(), static_cast<std::size_t>(4 * n));
     M::copy(*ctx_, state_.data(), o.state_.data(), static_cast<std::size_t>(n));
     if (free_.size() < static_cast<std::size_t>(o.free_count_)) free_.resize(static_cast<std::size_t>(o.free_count_));
@@ -240,7 +282,7 @@ class TetMesh {
   }
 
   MeshView view() {
-    return MeshView{tet_.data(), opp_t_.data(), face_.data(), state_.data()};
+    return MeshView(rec_.data(), face_.data(), state_.data());
   }
 
   // Moves alive tets to [0, alive) keeping their order, remaps neighbour references;
@@ -266,13 +308,15 @@ class TetMesh {
   // Keys lie in [0, dead_key) with dead_key < 2^31 (dead slots sort last under it).
   // shrink: as compact(). gather: each array moves by a gather (new slot j reads its old
   // slot; writes in order, reads at random) instead of a scatter (old slot t writes its
-  // new one: 4 partial sectors written at random per tet); the same mesh either way
-  // (GFlip3D::reorder_gather_ says when gFlip3D asks for it). The temporaries: 16 bytes
-  // per slot during the sort, then the map (4 per slot), with the gather the sorted ids
-  // too (4 per slot), and one scratch array (16 per alive tet, none with shrink); see
-  // reorder_bytes().
+  // new one: partial sectors written at random per tet); the same mesh either way
+  // (GFlip3D::reorder_gather_ says when gFlip3D asks for it). whole: the records move
+  // whole through a scratch of 32 bytes per alive tet, not as two halves in turn through
+  // one of 16. The temporaries: 16 bytes per slot during the sort, then the map (4 per
+  // slot), with the gather the sorted ids too (4 per slot), and one scratch array (16 or,
+  // whole, 32 per alive tet); see reorder_bytes().
   template <class Key>
-  par::Buffer<tid_t, B> reorder(Key key, tid_t dead_key, bool shrink = false, bool gather = false) {
+  par::Buffer<tid_t, B> reorder(Key key, tid_t dead_key, bool shrink = false, bool gather = false,
+                                bool whole = false) {
     const std::int64_t n = size();
     const std::size_t len = static_cast<std::size_t>(n + 1);
     par::Buffer<tid_t, B> k(*ctx_, len);  // the keys, then the map
@@ -295,32 +339,63 @@ class TetMesh {
       par::parallel_for(*ctx_, n, [=] GDEL_LAMBDA(std::int64_t j) { kp[ip[j]] = tid_t(j) < na ? tid_t(j) : tid_t(-1); });
     }
     if (gather) {
-      apply_remap(kp, alive, shrink, ip);
+      apply_remap(kp, alive, shrink, ip, whole);
     } else {
       ids.release();
-      apply_remap(kp, alive, shrink);
+      apply_remap(kp, alive, shrink, nullptr, whole);
     }
     return k;
   }
   // A bound on the bytes reorder() holds beyond the mesh: 16 per slot and the radix
   // sort's own scratch (below 4 per slot and 64 KiB: its histograms and look-back
-  // counters) during the sort, at most 20 per slot after it (24 with the gather).
-  std::int64_t reorder_bytes(bool gather = false) const {
-    return (gather ? 24 : 20) * (size() + 1) + (std::int64_t(1) << 16);
+  // counters) during the sort, then the map, the sorted ids with the gather, and the
+  // scratch: at most 20 per slot after it (+4 with the gather, +16 whole).
+  std::int64_t reorder_bytes(bool gather = false, bool whole = false) const {
+    return (20 + (gather ? 4 : 0) + (whole ? 16 : 0)) * (size() + 1) + (std::int64_t(1) << 16);
   }
   // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
   // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
   // a time through one scratch array of the alive tets, copied back in place (shrink:
-  // each array replaced by a new one of `alive` slots instead, the capacity).
+  // the face bytes and states replaced by new arrays of `alive` slots instead, and the
+  // records too when whole; the capacity is then `alive`). The records move whole
+  // (whole: through a scratch of 32 bytes per alive tet, which with shrink becomes the
+  // records' array) or as their two halves in turn (16 bytes per alive tet).
   // from: the old slot of each new slot in [0, alive) (rm's inverse), where the caller has
   // it: each array is then gathered instead of scattered.
-  void apply_remap(const tid_t* rm, std::int64_t alive, bool shrink = false, const tid_t* from = nullptr) {
+  void apply_remap(const tid_t* rm, std::int64_t alive, bool shrink = false, const tid_t* from = nullptr,
+                   bool whole = false) {
     const std::int64_t n = size();
-    par::Buffer<Tet, B> scratch(*ctx_, shrink ? 0 : static_cast<std::size_t>(std::max<std::int64_t>(alive, 1)));
-    remap_records(tet_, 1, alive, shrink, scratch, rm, from, [] GDEL_LAMBDA(const Tet& x) { return x; });
-    remap_records(opp_t_, 4, alive, shrink, scratch, rm, from, [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; });
-    remap_records(face_, 4, alive, shrink, scratch, rm, from, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
-    remap_records(state_, 1, alive, shrink, scratch, rm, from, [] GDEL_LAMBDA(std::uint8_t x) { return x; });
+    const std::size_t na = static_cast<std::size_t>(std::max<std::int64_t>(alive, 1));
+    auto nb = [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; };
+    if (whole) {
+      par::Buffer<TetRec, B> scratch(*ctx_, na);
+      remap_into(rec_.data(), scratch.data(), 1, alive, rm, from, [=] GDEL_LAMBDA(const TetRec& x) {
+        TetRec y = x;
+        for (int i = 0; i < 4; ++i) y.n[i] = nb(x.n[i]);
+        return y;
+      });
+      if (shrink)
+        rec_ = std::move(scratch);
+      else
+        par::detail::Memory<B>::copy(*ctx_, rec_.data(), scratch.data(), static_cast<std::size_t>(alive) * sizeof(TetRec));
+    } else {
+      // the halves in turn: the vertices, then the neighbour tets (each 16 bytes)
+      par::Buffer<Tet, B> scratch(*ctx_, na);
+      TetRec* r = rec_.data();
+      Tet* sc = scratch.data();
+      for (int half = 0; half < 2; ++half) {
+        Tet* src = reinterpret_cast<Tet*>(r) + half;  // every other Tet-sized half
+        remap_into(src, sc, 2, alive, rm, from, [=] GDEL_LAMBDA(const Tet& x) {
+          if (half == 0) return x;
+          Tet y;
+          for (int i = 0; i < 4; ++i) y.v[i] = nb(x.v[i]);
+          return y;
+        });
+        par::parallel_for(*ctx_, alive, [=] GDEL_LAMBDA(std::int64_t j) { src[2 * j] = sc[j]; });
+      }
+    }
+    remap_array(face_, 4, alive, shrink, rm, from);
+    remap_array(state_, 1, alive, shrink, rm, from);
     if (!shrink && n > alive) {  // the slots past the alive tets are dead
       std::uint8_t* st = state_.data();
       par::parallel_for(*ctx_, n - alive, [=] GDEL_LAMBDA(std::int64_t k) { st[alive + k] = 0; });
@@ -330,43 +405,57 @@ class TetMesh {
     free_count_ = 0;
   }
 
-  // apply_remap's step for one array: buf's per-slot records of `per` elements moved to
-  // their new slots (x: the element's new value), through the scratch or (shrink) into
-  // a new array of `alive` slots; by slot t's new slot rm[t], or (from) by new slot j's
-  // old slot from[j].
+  // apply_remap's step: elements src[stride * t] of slots t moved to dst[j] of their new
+  // slots j (x: the new value); by slot t's new slot rm[t], or (from) by new slot j's old
+  // slot from[j].
   template <class T, class X>
-  void remap_records(par::Buffer<T, B>& buf, std::int64_t per, std::int64_t alive, bool shrink,
-                     par::Buffer<Tet, B>& scratch, const tid_t* rm, const tid_t* from, X x) {
-    static_assert(alignof(T) <= alignof(Tet));  // (and per * sizeof(T) <= sizeof(Tet) for all four arrays)
-    par::Buffer<T, B> nb(*ctx_, shrink ? static_cast<std::size_t>(std::max<std::int64_t>(per * alive, 1)) : 0);
-    T* dst = shrink ? nb.data() : reinterpret_cast<T*>(scratch.data());
-    const T* src = buf.data();
+  void remap_into(const T* src, T* dst, std::int64_t stride, std::int64_t alive, const tid_t* rm, const tid_t* from,
+                  X x) {
     if (from) {
-      par::parallel_for(*ctx_, alive, [=] GDEL_LAMBDA(std::int64_t j) {
-        const std::int64_t t = from[j];
-        for (std::int64_t i = 0; i < per; ++i) dst[per * j + i] = x(src[per * t + i]);
-      });
+      par::parallel_for(*ctx_, alive, [=] GDEL_LAMBDA(std::int64_t j) { dst[j] = x(src[stride * from[j]]); });
     } else {
       par::parallel_for(*ctx_, size(), [=] GDEL_LAMBDA(std::int64_t t) {
         const tid_t d = rm[t];
-        if (d < 0) return;
-        for (std::int64_t i = 0; i < per; ++i) dst[per * std::int64_t(d) + i] = x(src[per * t + i]);
+        if (d >= 0) dst[d] = x(src[stride * t]);
       });
+    }
+  }
+  // apply_remap's step for a byte array of `per` bytes a slot (the face bytes, the
+  // states): moved as `per`-byte groups through a scratch copied back, or (shrink) into
+  // a new array of `alive` slots.
+  void remap_array(par::Buffer<std::uint8_t, B>& buf, std::int64_t per, std::int64_t alive, bool shrink,
+                   const tid_t* rm, const tid_t* from) {
+    par::Buffer<std::uint8_t, B> nb(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(per * alive, 1)));
+    std::uint8_t* dst = nb.data();
+    const std::uint8_t* src = buf.data();
+    if (per == 4) {
+      remap_into(reinterpret_cast<const std::uint32_t*>(src), reinterpret_cast<std::uint32_t*>(dst), 1, alive, rm, from,
+                 [] GDEL_LAMBDA(std::uint32_t v) { return v; });
+    } else {
+      remap_into(src, dst, 1, alive, rm, from, [] GDEL_LAMBDA(std::uint8_t v) { return v; });
     }
     if (shrink)
       buf = std::move(nb);
     else
-      par::detail::Memory<B>::copy(*ctx_, buf.data(), dst, static_cast<std::size_t>(per * alive) * sizeof(T));
+      par::detail::Memory<B>::copy(*ctx_, buf.data(), dst, static_cast<std::size_t>(per * alive));
   }
 
-  par::Buffer<Tet, B>& tets() { return tet_; }
-  // Adjacency: packed facets (4 per slot, -1: none) to / from the split arrays.
+  // The records (vertices and neighbour tets of each slot).
+  par::Buffer<TetRec, B>& records() { return rec_; }
+  // Slots [0, count) get the vertices of tets src (backend memory).
+  void set_tets_from(const Tet* src, std::int64_t count) {
+    TetRec* r = rec_.data();
+    par::parallel_for(*ctx_, count, [=] GDEL_LAMBDA(std::int64_t t) { r[t].t = src[t]; });
+  }
+  // Adjacency: packed facets (4 per slot, -1: none) to / from the records and face bytes.
   std::vector<fid_t> opp_to_host() const {
-    const std::vector<tid_t> t = opp_t_.to_host();
+    const std::vector<TetRec> r = rec_.to_host();
     const std::vector<std::uint8_t> f = face_.to_host();
-    std::vector<fid_t> o(t.size());
-    for (std::size_t k = 0; k < t.size(); ++k)
-      o[k] = t[k] < 0 ? fid_t(-1) : pack_facet(t[k], f[k] & MeshView::kFaceMask);
+    std::vector<fid_t> o(4 * r.size());
+    for (std::size_t k = 0; k < o.size(); ++k) {
+      const tid_t t = r[k >> 2].n[k & 3];
+      o[k] = t < 0 ? fid_t(-1) : pack_facet(t, f[k] & MeshView::kFaceMask);
+    }
     return o;
   }
   // Slots [0, count / 4) from count packed facets in backend memory; their face flags
@@ -375,13 +464,33 @@ class TetMesh {
     const MeshView v = view();
     par::parallel_for(*ctx_, count, [=] GDEL_LAMBDA(std::int64_t k) { v.set_opp_flags(k, src[k], 0); });
   }
-  void release_opp() {
-    opp_t_.release();
-    face_.release();
-  }
-  // The face bytes alone (neighbours' faces, face flags), for an output stage that reads
-  // only the neighbour tets (MeshView::opp_tet) from here on.
+  // The face bytes (neighbours' faces, face flags), for an output stage that reads only
+  // the records (MeshView::tet, MeshView::opp_tet) from here on.
   void release_faces() { face_.release(); }
+  // The output's tets from the records, in place: tet t with pos[t + 1] > pos[t] becomes
+  // entries [4 pos[t], 4 pos[t] + 4) = vx(its vertex i), in an array of n (>= 4 pos[size])
+  // 32-bit entries that takes over the records' storage (the mesh has none after this:
+  // read its neighbours before). pos is an exclusive prefix count (pos[t] <= t), so entry
+  // 4 pos[t] lies at or below byte 16 t, under record t's own vertices at byte 32 t: in
+  // blocks of slots [m, 2m), whose entries lie under byte 32 m, below all of the block's
+  // records, every record is read before its bytes are written (one pass a block, the
+  // blocks in order: ≈ log2(size) passes).
+  template <class P, class VX>
+  par::Buffer<std::int32_t, B> take_tets(const P* pos, std::int64_t n, VX vx) {
+    const std::int64_t nt = size();
+    TetRec* r = rec_.data();
+    std::int32_t* out = reinterpret_cast<std::int32_t*>(r);
+    for (std::int64_t lo = 0, hi = 1; lo < nt; lo = hi, hi = 2 * hi) {
+      const std::int64_t a = lo, b = std::min(hi, nt);
+      par::parallel_for(*ctx_, b - a, [=] GDEL_LAMBDA(std::int64_t k) {
+        const std::int64_t t = a + k;
+        if (pos[t + 1] == pos[t]) return;
+        const Tet x = r[t].t;
+        for (int i = 0; i < 4; ++i) out[4 * std::int64_t(pos[t]) + i] = vx(x.v[i]);
+      });
+    }
+    return std::move(rec_).template recast<std::int32_t>(static_cast<std::size_t>(n));
+  }
   par::Buffer<std::uint8_t, B>& state() { return state_; }
   par::Buffer<std::uint8_t, B>& face_bytes() { return face_; }  // (MeshView::face)
   // Sets the high-water mark (slots [0, size) in use) and empties the free stack
@@ -394,8 +503,7 @@ class TetMesh {
 
  private:
   par::Context<B>* ctx_;
-  par::Buffer<Tet, B> tet_;
-  par::Buffer<tid_t, B> opp_t_;
+  par::Buffer<TetRec, B> rec_;
   par::Buffer<std::uint8_t, B> face_;  // the face bytes (MeshView::face)
   par::Buffer<std::uint8_t, B> state_;
   par::Buffer<tid_t, B> free_;  // the free stack: as long as it has ever been deep, not the capacity
@@ -417,7 +525,7 @@ template <class B>
 MeshProblems check_invariants(TetMesh<B>& m, std::int64_t num_points, std::size_t max_report = 20) {
   MeshProblems p;
   std::int64_t n = m.size();
-  auto tet = m.tets().to_host();
+  const auto rec = m.records().to_host();
   auto opp = m.opp_to_host();
   auto st = m.state().to_host();
   auto add = [&](const std::string& s) {
@@ -425,7 +533,7 @@ MeshProblems check_invariants(TetMesh<B>& m, std::int64_t num_points, std::size_
   };
   for (std::int64_t t = 0; t < n; ++t) {
     if (!(st[t] & kAlive)) continue;
-    const Tet& a = tet[t];
+    const Tet& a = rec[t].t;
     for (int i = 0; i < 4; ++i) {
       vid_t v = a.v[i];
       if (v != kInfinite && (v < 0 || v >= num_points)) add("tet " + std::to_string(t) + ": vertex id out of range");
@@ -447,10 +555,10 @@ MeshProblems check_invariants(TetMesh<B>& m, std::int64_t num_points, std::size_
       int shared = 0;
       for (int k = 0; k < 3; ++k) {
         vid_t w = a.v[face_vertex(i, k)];
-        for (int l = 0; l < 3; ++l) shared += (tet[u].v[face_vertex(j, l)] == w);
+        for (int l = 0; l < 3; ++l) shared += (rec[u].t.v[face_vertex(j, l)] == w);
       }
       if (shared != 3) add("tet " + std::to_string(t) + " face " + std::to_string(i) + ": neighbour's face differs");
-      if (tet[u].v[j] == a.v[i]) add("tet " + std::to_string(t) + " face " + std::to_string(i) + ": same apex both sides");
+      if (rec[u].t.v[j] == a.v[i]) add("tet " + std::to_string(t) + " face " + std::to_string(i) + ": same apex both sides");
     }
   }
   return p;

@@ -196,6 +196,28 @@ class Buffer {
   }
   void set(std::size_t i, const T& v) { M::from_host(*ctx_, data_ + i, &v, sizeof(T)); }
 
+  // This buffer's storage as a buffer of n elements of U (n * sizeof(U) at most its
+  // capacity in bytes, which must be a whole number of U), contents as bytes kept; this
+  // buffer is left empty. For a stage that rewrites an array in place as another type.
+  template <class U>
+  Buffer<U, B> recast(std::size_t n) && {
+    static_assert(alignof(U) <= alignof(T) && sizeof(T) % sizeof(U) == 0);
+    Buffer<U, B> o(*ctx_);
+    o.adopt(reinterpret_cast<U*>(data_), n, cap_ * (sizeof(T) / sizeof(U)));
+    data_ = nullptr;
+    size_ = cap_ = 0;
+    if (n > o.capacity()) o.resize(n);
+    return o;
+  }
+  // (recast's other side: takes storage of cap elements, already counted in the
+  // context's memory, as this empty buffer's)
+  void adopt(T* p, std::size_t n, std::size_t cap) {
+    release();
+    data_ = p;
+    cap_ = cap;
+    size_ = std::min(n, cap);
+  }
+
  private:
   void free_storage() {
     if (data_) {

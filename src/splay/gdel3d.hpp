@@ -392,8 +392,8 @@ class GDel3D {
         },
         [=] GDEL_LAMBDA(I64 t, double* work) { return g.volume_sign_exact(mv.tet[t].v, work); },
         geom::kPredicateWork);
-    // flp[t] > 0: kept; kInfTet: a tet with the vertex at infinity (read below, after
-    // the tets array is gone). Star tets: from the stars, each once.
+    // flp[t] > 0: kept; kInfTet: a tet with the vertex at infinity (read by the
+    // neighbours' pass below). Star tets: from the stars, each once.
     constexpr std::int8_t kInfTet = -100;
     par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {
       if (tet_slot(mv, static_cast<tid_t>(t), inf) >= 0) flp[t] = kInfTet;
@@ -412,18 +412,11 @@ class GDel3D {
                                            [=] GDEL_LAMBDA(I64 t) { return t_candidate(t) && flp[t] == 0; }) +
                         flat_stars;
     // The mesh is consumed from here on, one array at a time, so that the output is
-    // never beside the whole mesh (at 10^8 points: 94 -> 73 bytes per tet at the peak;
-    // 4 fewer at both since one face byte holds the neighbour's face and the flags).
+    // never beside the whole mesh: the states and face bytes first, then the neighbours
+    // read out of the records, which then become the output's tets in place
+    // (TetMesh::take_tets).
     mesh_.state().release();
     mesh_.release_faces();  // (the neighbours below: their tets alone)
-    tets.resize(static_cast<std::size_t>(4 * nout));
-    vid_t* op = tets.data();
-    par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {
-      if (tnp[t + 1] == tnp[t]) return;
-      const I64 d = tnp[t];
-      for (int i = 0; i < 4; ++i) op[4 * d + i] = mv.tet[t].v[i];
-    });
-    mesh_.tets().release();
     nbr.resize(static_cast<std::size_t>(4 * nout));
     std::int32_t* np = nbr.data();
     par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {
@@ -436,7 +429,9 @@ class GDel3D {
         np[4 * d + i] = u_inf ? -1 : (tnp[u + 1] != tnp[u] ? static_cast<std::int32_t>(tnp[u]) : -2);
       }
     });
-    mesh_.release_opp();
+    // the tets written over the records (the mesh is gone after this)
+    tets = mesh_.take_tets(tnp, 4 * nout, [] GDEL_LAMBDA(vid_t v) { return v; });
+    vid_t* op = tets.data();
     tnum.release();
     flat.release();
     sp_.write_star_tets(snum, op, np, nkeep);

@@ -8,10 +8,11 @@
 namespace gdel::test {
 
 // Two tets glued along a face, built through kernels, with slot claims/releases,
-// compaction and the invariant checker; the sorts move the arrays by a gather or
-// (gather false) a scatter (TetMesh::reorder).
+// compaction, the invariant checker and the output's tets written over the records; the
+// sorts move the arrays by a gather or (gather false) a scatter, and the records whole or
+// (whole false) as two halves (TetMesh::reorder).
 template <class B>
-void tet_mesh_cases(par::Context<B>& ctx, bool gather) {
+void tet_mesh_cases(par::Context<B>& ctx, bool gather, bool whole) {
   using namespace gdel::mesh;
   TetMesh<B> m(ctx);
   SlotSource src = m.claim(2);
@@ -92,13 +93,14 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather) {
   });
   // reorder by a key (largest first vertex first): slots follow the key, links follow the slots
   {
-    auto rmk = m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(1000 - t.v[0]); }, 1024, false, gather).to_host();
+    auto rmk = m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(1000 - t.v[0]); }, 1024, false, gather, whole).to_host();
     EXPECT_EQ(m.size(), 3);
     EXPECT_EQ(rmk[2], -1);  // dead slot dropped
-    auto tv = m.tets().to_host();
-    EXPECT_EQ(tv[0].v[0], 9);  // keys 991 < 995 < 999
-    EXPECT_EQ(tv[1].v[0], 5);
-    EXPECT_EQ(tv[2].v[0], 1);
+    auto tv = m.records().to_host();
+    EXPECT_EQ(tv[0].t.v[0], 9);  // keys 991 < 995 < 999
+    EXPECT_EQ(tv[1].t.v[0], 5);
+    EXPECT_EQ(tv[2].t.v[0], 1);
+    EXPECT_EQ(tv[0].t.v[3], kInfinite);
     auto op = m.opp_to_host();
     EXPECT_EQ(op[4 * 0 + 3], pack_facet(2, 3));  // old 3 <-> old 1 glued through face 3
     EXPECT_EQ(op[4 * 2 + 3], pack_facet(0, 3));
@@ -110,7 +112,7 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather) {
     // old slot 0's face 2
     EXPECT_EQ(m.face_bytes().to_host()[4 * 1 + 2] >> MeshView::kFlagShift, kSpecial | kSphereFail);
     // and back to slot order for the compaction checks below
-    m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); }, 4, false, gather);
+    m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); }, 4, false, gather, whole);
   }
   auto remap = m.compact().to_host();
   EXPECT_EQ(m.size(), 3);
@@ -118,16 +120,28 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather) {
   auto opp = m.opp_to_host();
   EXPECT_EQ(opp[4 * 1 + 3], pack_facet(2, 3));
   EXPECT_EQ(opp[4 * 2 + 3], pack_facet(1, 3));
-  // sorted with shrink (the output's form): the capacity is cut to the alive tets
-  m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0]); }, 1024, /*shrink=*/true, gather);
+  // sorted with shrink (the output's form): the per-slot bytes are cut to the alive tets,
+  // and the records too when they move whole
+  m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0]); }, 1024, /*shrink=*/true, gather, whole);
   EXPECT_EQ(m.size(), 3);
-  EXPECT_EQ(m.capacity(), 3);
-  auto ts = m.tets().to_host();
-  EXPECT_EQ(ts[0].v[0], 1);
-  EXPECT_EQ(ts[1].v[0], 5);
-  EXPECT_EQ(ts[2].v[0], 9);
+  EXPECT_EQ(m.state().size(), 3u);
+  if (whole) EXPECT_EQ(m.capacity(), 3);
+  auto ts = m.records().to_host();
+  EXPECT_EQ(ts[0].t.v[0], 1);
+  EXPECT_EQ(ts[1].t.v[0], 5);
+  EXPECT_EQ(ts[2].t.v[0], 9);
   EXPECT_EQ(m.opp_to_host()[4 * 2 + 3], pack_facet(0, 3));  // {9,..} and {1,..} still glued
   EXPECT_EQ(m.alive_count(), 3);
+  // the output's tets over the records: slots 0 and 2 kept (as output tets 0 and 1), the
+  // vertices mapped
+  {
+    par::Buffer<tid_t, B> pos(ctx, 4);
+    pos.assign(std::vector<tid_t>{0, 1, 1, 2});
+    auto out = m.take_tets(pos.data(), 8, [] GDEL_LAMBDA(vid_t x) { return static_cast<std::int32_t>(x + 100); });
+    EXPECT_EQ(out.size(), 8u);
+    EXPECT_EQ(m.records().size(), 0u);
+    EXPECT_EQ(out.to_host(), (std::vector<std::int32_t>{101, 100, 102, 104, 109, 110, 111, 100 + kInfinite}));
+  }
 }
 
 }  // namespace gdel::test
