@@ -357,7 +357,8 @@ class TetMesh {
   // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
   // a time through one scratch array of the alive tets, copied back in place (shrink:
   // the face bytes and states replaced by new arrays of `alive` slots instead, and the
-  // records too when whole; the capacity is then `alive`). The records move whole
+  // records too when whole, else kept in their storage; the capacity is then `alive`).
+  // The records move whole
   // (whole: through a scratch of 32 bytes per alive tet, which with shrink becomes the
   // records' array) or as their two halves in turn (16 bytes per alive tet).
   // from: the old slot of each new slot in [0, alive) (rm's inverse), where the caller has
@@ -393,6 +394,8 @@ class TetMesh {
         });
         par::parallel_for(*ctx_, alive, [=] GDEL_LAMBDA(std::int64_t j) { src[2 * j] = sc[j]; });
       }
+      // shrink: `alive` records in use (the storage stays; a later reserve() reuses it)
+      if (shrink) rec_.resize(na);
     }
     remap_array(face_, 4, alive, shrink, rm, from);
     remap_array(state_, 1, alive, shrink, rm, from);

@@ -120,12 +120,14 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather, bool whole) {
   auto opp = m.opp_to_host();
   EXPECT_EQ(opp[4 * 1 + 3], pack_facet(2, 3));
   EXPECT_EQ(opp[4 * 2 + 3], pack_facet(1, 3));
-  // sorted with shrink (the output's form): the per-slot bytes are cut to the alive tets,
-  // and the records too when they move whole
+  // sorted with shrink (the output's form): the capacity is cut to the alive tets (the
+  // records' storage too when they move whole)
   m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0]); }, 1024, /*shrink=*/true, gather, whole);
   EXPECT_EQ(m.size(), 3);
+  EXPECT_EQ(m.capacity(), 3);
   EXPECT_EQ(m.state().size(), 3u);
-  if (whole) EXPECT_EQ(m.capacity(), 3);
+  EXPECT_EQ(m.face_bytes().size(), 12u);
+  if (whole) EXPECT_EQ(m.records().capacity(), 3u);
   auto ts = m.records().to_host();
   EXPECT_EQ(ts[0].t.v[0], 1);
   EXPECT_EQ(ts[1].t.v[0], 5);
