@@ -825,27 +825,33 @@ class GFlip3D {
     par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(std::int64_t s) {
       for (int i = 0; i < 4; ++i) oo[4 * s + i] = m.opp(4 * std::int64_t(ch[4 * s]) + i);
     });
+    // each child written whole (its record in one sector, MeshView::put_tet): faces 0-2
+    // internal, face 3 the split tet's face i, across to the neighbour's child when that
+    // split too, else to the neighbour, which links back
     par::parallel_for(ctx_, k, [=] GDEL_LAMBDA(std::int64_t s) {
       const vid_t* o = op[s].v;
       for (int i = 0; i < 4; ++i) {
         const tid_t c = ch[4 * s + i];
-        split_child_vertices(o, np[s], i, m.tet[c].v);
-        m.state[c] = mesh::kAlive | mesh::kChanged;
+        mesh::Tet x;
+        split_child_vertices(o, np[s], i, x.v);
+        tid_t nb[4];
+        std::uint8_t nbf[4], fl[4];
         for (int kk = 0; kk < 3; ++kk) {
           const int j = face_vertex(i, kk);
-          m.set_opp_flags(4 * std::int64_t(c) + kk, pack_facet(ch[4 * s + j], split_shared_face(j, i)),
-                          mesh::kInternal);
+          nb[kk] = ch[4 * s + j];
+          nbf[kk] = static_cast<std::uint8_t>(split_shared_face(j, i));
+          fl[kk] = mesh::kInternal;
         }
         const fid_t ext = oo[4 * s + i];
         const tid_t nt = facet_tet(ext);
         const int nf = facet_face(ext);
         const std::int32_t ns = split_of[nt];
-        if (ns >= 0) {
-          m.set_opp_flags(4 * std::int64_t(c) + 3, pack_facet(ch[4 * std::int64_t(ns) + nf], 3), 0);
-        } else {
-          m.set_opp_flags(4 * std::int64_t(c) + 3, ext, 0);
-          m.set_opp_flags(4 * std::int64_t(nt) + nf, pack_facet(c, 3), 0);
-        }
+        nb[3] = ns >= 0 ? ch[4 * std::int64_t(ns) + nf] : nt;
+        nbf[3] = static_cast<std::uint8_t>(ns >= 0 ? 3 : nf);
+        fl[3] = 0;
+        m.put_tet(c, x, nb, nbf, fl);
+        m.state[c] = mesh::kAlive | mesh::kChanged;
+        if (ns < 0) m.set_opp_flags(4 * std::int64_t(nt) + nf, pack_facet(c, 3), 0);
       }
     });
     par::mark(ctx_, "insert: split");
