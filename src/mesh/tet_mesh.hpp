@@ -150,19 +150,8 @@ struct MeshView {
   // so the sector is written whole), then its face bytes.
   GDEL_HD void put_tet(tid_t t, const Tet& x, const tid_t nt[4], const std::uint8_t nf[4],
                        const std::uint8_t fl[4]) const {
-    const std::int64_t k = 4 * std::int64_t(t);
-    std::uint8_t b[4];
-    for (int i = 0; i < 4; ++i) b[i] = face_byte(nf[i], fl[i]);
-#if defined(__CUDA_ARCH__)
-    int4* r = reinterpret_cast<int4*>(rec + t);
-    r[0] = make_int4(x.v[0], x.v[1], x.v[2], x.v[3]);
-    r[1] = make_int4(nt[0], nt[1], nt[2], nt[3]);
-    *reinterpret_cast<uchar4*>(face + k) = make_uchar4(b[0], b[1], b[2], b[3]);
-#else
-    rec[t].t = x;
-    std::memcpy(rec[t].n, nt, 4 * sizeof(tid_t));
-    std::memcpy(face + k, b, 4);
-#endif
+    rec[t].t = x;  // (Tet is 16-byte aligned: one vector store)
+    put_adj(t, nt, nf, fl);
   }
 
   GDEL_HD bool alive(tid_t t) const { return (state[t] & kAlive) != 0; }
@@ -358,9 +347,9 @@ class TetMesh {
   // a time through one scratch array of the alive tets, copied back in place (shrink:
   // the face bytes and states replaced by new arrays of `alive` slots instead, and the
   // records too when whole, else kept in their storage; the capacity is then `alive`).
-  // The records move whole
-  // (whole: through a scratch of 32 bytes per alive tet, which with shrink becomes the
-  // records' array) or as their two halves in turn (16 bytes per alive tet).
+  // The records move whole (through a scratch of 32 bytes per alive tet, which with
+  // shrink becomes the records' array) or as their two halves in turn (16 bytes per alive
+  // tet).
   // from: the old slot of each new slot in [0, alive) (rm's inverse), where the caller has
   // it: each array is then gathered instead of scattered.
   void apply_remap(const tid_t* rm, std::int64_t alive, bool shrink = false, const tid_t* from = nullptr,

@@ -31,6 +31,10 @@
 
 namespace gdel::splay {
 
+// The list of tets with a pulled vertex (GDel3D::incidence) is first sized for this many
+// a vertex: an interior vertex of a uniform sample has ≈ 27 tets.
+inline constexpr I64 kListedTetsPerVertex = 48;
+
 struct RepairResult {
   I64 failed = 0, stars_built = 0, flat_removed = 0;
   SplayStats splay;
@@ -88,14 +92,31 @@ class GDel3D {
       }
       return c;
     };
-    // the tets with a wanted vertex first (few: memory by them, not by the mesh)
-    // (not const: nvcc 13.0 crashes, "i_copy_expr_tree", on a const local whose
-    // initializer holds an extended lambda)
-    auto has_wanted = [=] GDEL_LAMBDA(I64 t) { return hits(t) > 0; };
-    I64 nl = par::count_indices(ctx_, static_cast<std::size_t>(nt), has_wanted);
-    Buffer<tid_t, B> list(ctx_, static_cast<std::size_t>(std::max<I64>(nl, 1)));
-    tid_t* lp = list.data();
-    par::select_indices(ctx_, static_cast<std::size_t>(nt), lp, has_wanted);
+    // The tets with a wanted vertex first (few: memory by them, not by the mesh), listed
+    // by one pass over T into a list of a bound's size (an atomic counter: their order
+    // does not matter, the keys are sorted below); a second pass, into a list of the
+    // count, only where a wanted vertex's star was larger than the bound allows for (a
+    // point on a flat hull has thousands of tets).
+    Buffer<I64, B> found(ctx_, 1);
+    I64* fp = found.data();
+    I64 cap = std::min<I64>(nt, kListedTetsPerVertex * static_cast<I64>(verts.size()) + 4096);
+    Buffer<tid_t, B> list(ctx_, static_cast<std::size_t>(std::max<I64>(cap, 1)));
+    I64 nl = 0;
+    for (;;) {
+      par::fill(ctx_, fp, 1, I64(0));
+      tid_t* lp = list.data();
+      const I64 c = cap;
+      par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {
+        if (hits(t) == 0) return;
+        const I64 k = par::atomic_add(fp, I64(1));
+        if (k < c) lp[k] = static_cast<tid_t>(t);
+      });
+      nl = found.get(0);
+      if (nl <= cap) break;
+      cap = nl;
+      list = Buffer<tid_t, B>(ctx_, static_cast<std::size_t>(cap));
+    }
+    const tid_t* lp = list.data();
     Buffer<I64, B> cnt(ctx_, static_cast<std::size_t>(nl + 1));
     I64* cp = cnt.data();
     par::parallel_for(ctx_, nl, [=] GDEL_LAMBDA(I64 j) { cp[j] = hits(lp[j]); });
@@ -375,29 +396,26 @@ class GDel3D {
     const std::int32_t* so = sp_.star_of();
     const vid_t inf = g_.inf;
     const flip::Geo g = g_;
-    // T tets kept: finite, no vertex with a star, not flat
+    // T tets kept: finite, no vertex with a star, not flat. flp[t] > 0: kept; 0: flat;
+    // kInfTet: a tet with the vertex at infinity (read by the neighbours' pass below);
+    // kStarTet: finite with a vertex that has a star (the star tets come from the stars,
+    // each once). One pass over the records.
     Buffer<std::int8_t, B> flat(ctx_, static_cast<std::size_t>(std::max<I64>(nt, 1)));
     std::int8_t* flp = flat.data();
-    auto t_candidate = [=] GDEL_LAMBDA(I64 t) -> bool {
-      for (int i = 0; i < 4; ++i) {
-        const vid_t v = mv.tet[t].v[i];
-        if (v == inf || so[v] >= 0) return false;
-      }
-      return true;
-    };
+    constexpr std::int8_t kInfTet = -100, kStarTet = -101;
     res_.exact_evaluations += par::two_stage_signs(
         ctx_, nt, flp,
         [=] GDEL_LAMBDA(I64 t) -> std::int8_t {
-          return t_candidate(t) ? g.volume_sign_fast(mv.tet[t].v) : std::int8_t(0);
+          const mesh::Tet x = mv.tet[t];
+          bool star = false;
+          for (int i = 0; i < 4; ++i) {
+            if (x.v[i] == inf) return kInfTet;
+            star = star || so[x.v[i]] >= 0;
+          }
+          return star ? kStarTet : g.volume_sign_fast(x.v);
         },
         [=] GDEL_LAMBDA(I64 t, double* work) { return g.volume_sign_exact(mv.tet[t].v, work); },
         geom::kPredicateWork);
-    // flp[t] > 0: kept; kInfTet: a tet with the vertex at infinity (read by the
-    // neighbours' pass below). Star tets: from the stars, each once.
-    constexpr std::int8_t kInfTet = -100;
-    par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {
-      if (tet_slot(mv, static_cast<tid_t>(t), inf) >= 0) flp[t] = kInfTet;
-    });
     Buffer<I64, B> snum(ctx_);
     I64 flat_stars = 0;
     const I64 nstar = sp_.plan_star_tets(snum, flat_stars, res_.exact_evaluations);
@@ -408,9 +426,9 @@ class GDel3D {
     const I64 nkeep = par::counts_to_offsets(ctx_, tnp, static_cast<std::size_t>(nt));
     const I64 nout = nkeep + nstar;
     // flat tets dropped (T tets without star vertices, and star tets)
-    res_.flat_removed = par::count_indices(ctx_, static_cast<std::size_t>(nt),
-                                           [=] GDEL_LAMBDA(I64 t) { return t_candidate(t) && flp[t] == 0; }) +
-                        flat_stars;
+    res_.flat_removed =
+        par::count_indices(ctx_, static_cast<std::size_t>(nt), [=] GDEL_LAMBDA(I64 t) { return flp[t] == 0; }) +
+        flat_stars;
     // The mesh is consumed from here on, one array at a time, so that the output is
     // never beside the whole mesh: the states and face bytes first, then the neighbours
     // read out of the records, which then become the output's tets in place
