@@ -162,7 +162,7 @@ class GFlip3D {
     if (const char* e = std::getenv("GDEL_REORDER_SHARE")) cfg_.reorder_share = std::max(0, std::atoi(e));
     if (const char* e = std::getenv("GDEL_FLIPS_PER_ITERATION"))
       cfg_.max_flips_per_iteration = std::max<long long>(1, std::atoll(e));
-    trace_ = std::getenv("GDEL_FLIP_TRACE") != nullptr;
+    if (const char* tr = std::getenv("GDEL_FLIP_TRACE")) trace_ = std::atoi(tr) > 1 ? 2 : 1;
     tie_mode_ = tie_mode_from_env();
     auto t0 = std::chrono::steady_clock::now();
     const bool preset = mesh_.size() > 0;  // init_from() gave the start (Options::initial = grid)
@@ -1225,6 +1225,10 @@ class GFlip3D {
     std::int64_t nfl = h[1], n23 = h[2];
     exact_seen_ = h[3] - tally_seen_;  // (the last records pass and this propose)
     tally_seen_ = h[3];
+    if (trace_ > 1)  // (na: a bound where the active set was deferred; flips before any cap)
+      std::fprintf(stderr, "gflip3d flip iteration: active %lld, flips %lld (2-3 %lld), %s\n",
+                   static_cast<long long>(na), static_cast<long long>(nfl), static_cast<long long>(n23),
+                   na <= team_max_ ? "team" : "large");
     if (np == 0) {
       active_.release();
       return 0;
@@ -1853,7 +1857,7 @@ class GFlip3D {
   bool sequential_ran_ = false;
   std::unique_ptr<SequentialInsertion<B>> seq_;  // one point per round: the tets, until mesh() or the extract
   int tie_mode_ = kDefaultTieMode;  // tie_break's mode
-  bool trace_ = false;  // GDEL_FLIP_TRACE=1: one line per InsFlip round on stderr
+  int trace_ = 0;  // GDEL_FLIP_TRACE=1: one line per InsFlip round on stderr; 2: and per flip iteration
   double inv_scale_ = 1.0;
 };
 

@@ -10,7 +10,10 @@
 // name, the largest of these, which tells which step sets the call's peak memory.
 // Context::profile_report() (synchronizes) returns the totals per name in first-seen
 // order; the API prints them to stderr at the end of a call. A mark costs one branch
-// when profiling is off.
+// when profiling is off. With GDEL_PROFILE_SERIES set as well, profile_report() also
+// prints each interval in order ("profile series K NAME MS", K counting that name's
+// intervals), all of them ("1") or those whose name holds one of the variable's
+// comma-separated parts: to follow a step over the iterations of a loop.
 #pragma once
 
 #include <algorithm>
@@ -41,15 +44,37 @@ inline bool knob_on(const char* name) {
   return e && std::string(e) == "1";
 }
 
+// Whether GDEL_PROFILE_SERIES (spec) asks for the intervals of step `name`.
+inline bool series_wanted(const char* spec, const std::string& name) {
+  const std::string sp(spec);
+  if (sp == "1") return true;
+  std::size_t a = 0;
+  while (a <= sp.size()) {
+    const std::size_t b = std::min(sp.find(',', a), sp.size());
+    if (b > a && name.find(sp.substr(a, b - a)) != std::string::npos) return true;
+    a = b + 1;
+  }
+  return false;
+}
+
 // Totals per name: mark k (name names[k]) closes the interval (t[k], t[k+1]], whose
-// memory peak is peaks[k]; t holds one more entry than names (t[0]: the origin).
+// memory peak is peaks[k]; t holds one more entry than names (t[0]: the origin). Prints
+// the series that GDEL_PROFILE_SERIES asks for to stderr.
 inline ProfileTotals profile_totals(const std::vector<const char*>& names, const std::vector<double>& t,
                                     const std::vector<std::size_t>& peaks) {
   ProfileTotals out;
+  std::vector<long long> seen;  // intervals so far, by entry of out
+  const char* series = std::getenv("GDEL_PROFILE_SERIES");
   for (std::size_t k = 0; k < names.size() && k + 1 < t.size(); ++k) {
     std::size_t j = 0;
     while (j < out.size() && out[j].name != names[k]) ++j;
-    if (j == out.size()) out.push_back({names[k], 0.0, 0});
+    if (j == out.size()) {
+      out.push_back({names[k], 0.0, 0});
+      seen.push_back(0);
+    }
+    if (series && series_wanted(series, out[j].name))
+      std::fprintf(stderr, "profile series %lld %s %.4f\n", seen[j], names[k], 1e3 * (t[k + 1] - t[k]));
+    ++seen[j];
     out[j].seconds += t[k + 1] - t[k];
     if (k < peaks.size()) out[j].peak_bytes = std::max(out[j].peak_bytes, peaks[k]);
   }
