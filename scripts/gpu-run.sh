@@ -1745,6 +1745,64 @@ PY
     GDEL_PROFILE=1 bench s59b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench_old s59b_e7p_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
+  s60a)  # session 60: the split's whole records, one pass for the pulled stars' tets, the extract's fused pass (gdel-bench-old: HEAD 9d56081), and the study GDEL_SORT_AFTER_SPLIT=1 ("sas"): uniform 10^7 x3, 10^6 x2, profiles with the flip loop's series; uniform 2*10^8 where the card holds it (an H200)
+    for r in 1 2 3; do
+      bench_old "s60a_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s60a_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_SORT_AFTER_SPLIT=1 bench "s60a_e7_sas$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    for r in 1 2; do
+      bench_old "s60a_e6_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s60a_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_SORT_AFTER_SPLIT=1 bench "s60a_e6_sas$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    series="flip: propose,flip: records + write tets,flip: adjacency,flip: next active set,tet reordering,relocate: DAG walk,flip: vote,insert: scores,insert: split"
+    GDEL_PROFILE=1 bench_old s60a_e7p_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=2 GDEL_PROFILE_SERIES="$series" bench s60a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_SORT_AFTER_SPLIT=1 GDEL_PROFILE=1 GDEL_FLIP_TRACE=2 GDEL_PROFILE_SERIES="$series" bench s60a_e7p_sas 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    for v in new sas; do
+      grep -h "^profile series\|^gflip3d " "/tmp/gpu-run-s60a_e7p_$v.log" >"$out/series_e7_$v.txt"
+    done
+    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+      bench s60a_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    fi
+    ;;
+  s60b)  # session 60: every GPU test on the new binaries, then gFlip3D's and gDel3D's under GDEL_SORT_AFTER_SPLIT=1
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    GDEL_SORT_AFTER_SPLIT=1 step gpu_gdel3d_sas 200 "$tbin/gpu_gdel3d"
+    GDEL_SORT_AFTER_SPLIT=1 step gpu_gflip3d_sas 200 "$tbin/gpu_gflip3d"
+    ;;
+  s60c)  # session 60: SlotSource::spread (a batch's claims at their users' ranks among the freed slots) against GDEL_CLAIM_SPREAD=0 ("top") and HEAD 9d56081 (old): uniform 10^7 x3, 10^6 x3, profiles (10^7 series; grid and sphere 10^6), every GPU test
+    for r in 1 2 3; do
+      bench_old "s60c_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s60c_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      GDEL_CLAIM_SPREAD=0 bench "s60c_e7_top$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    for r in 1 2 3; do
+      bench_old "s60c_e6_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      bench "s60c_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+      GDEL_CLAIM_SPREAD=0 bench "s60c_e6_top$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    done
+    series="flip: propose,flip: records + write tets,flip: adjacency"
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=2 GDEL_PROFILE_SERIES="$series" bench s60c_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    grep -h "^profile series\|^gflip3d " /tmp/gpu-run-s60c_e7p_new.log >"$out/series_e7_new.txt"
+    GDEL_PROFILE=1 bench_old s60c_e6p_old 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s60c_e6p_new 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_CLAIM_SPREAD=0 GDEL_PROFILE=1 bench s60c_e6p_top 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    ;;
+  s60d)  # session 60: the final binaries (s60a's changes without the study knob; no SlotSource::spread): every GPU test, uniform 10^7 x2 and 10^6 against HEAD 9d56081
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    for r in 1 2; do
+      bench_old "s60d_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      bench "s60d_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+    bench_old s60d_e6_old 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench s60d_e6_new 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
