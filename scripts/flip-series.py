@@ -18,7 +18,7 @@ STEPS = ["flip: propose", "flip: records + write tets", "flip: adjacency", "flip
 def main():
     path = sys.argv[1]
     steps = sys.argv[2:] or STEPS
-    iters, rounds, series = [], [], {}
+    iters, series = [], {}
     for line in open(path, errors="replace"):
         m = re.match(r"gflip3d flip iteration: active (\d+), flips (\d+) \(2-3 (\d+)\), (\w+)", line)
         if m:
@@ -29,7 +29,6 @@ def main():
             for it in iters:
                 if it["round"] is None:
                     it["round"] = int(m[1])
-            rounds.append(int(m[1]))
             continue
         m = re.match(r"profile series (\d+) (.+) ([0-9.]+)$", line.strip())
         if m:
