@@ -230,7 +230,6 @@ Triangulation delaunay_into(Context<B>& ctx, std::span<const double> points, con
   // The mesh is consumed one array at a time, so that the output never sits beside
   // the whole mesh: the neighbours first, then the tets written over the records.
   mesh.state().release();
-  mesh.release_faces();  // (the neighbours below: their tets alone)
   Buffer<std::int32_t, B> tn(ctx, static_cast<std::size_t>(4 * std::max<tid_t>(nfin, 1)));
   std::int32_t* tnp = tn.data();
   par::parallel_for(ctx, nt, [=] GDEL_LAMBDA(I64 t) {

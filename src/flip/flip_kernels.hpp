@@ -161,8 +161,7 @@ GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, 
   const vid_t* bv = bt.v;
   tid_t nt[4];
   std::uint8_t fl[4];
-  m.get_opp_tets(b, nt);
-  m.get_face_flags(b, fl);
+  m.get_adj(b, nt, fl);
   vid_t apex[4];
   for (int i = 0; i < 4; ++i) apex[i] = apex_in(m, nt[i], bv, i);
   for (int i = 0; i < 4; ++i) {
@@ -201,10 +200,9 @@ template <class Work>
 GDEL_HD std::int8_t face_proposal(const Geo& g, const MeshView& m, tid_t b, int i, Work work) {
   if (!m.alive(b)) return -1;
   const Tet bt = m.tet[b];
-  std::uint8_t fl[4];
-  m.get_face_flags(b, fl);
+  if (m.face_flags(b, i) & mesh::kInternal) return -1;
   const vid_t x = apex_across(m, b, bt.v, i);
-  if (x == kNoVertex || (pick4(fl, i) & mesh::kInternal)) return -1;
+  if (x == kNoVertex) return -1;
   const int s = g.insphere<true>(bt.v, x, work);
   if (s == par::kUndecided) return kUndecidedResult;
   if (s <= 0) return -1;  // locally Delaunay
@@ -505,8 +503,8 @@ GDEL_HD constexpr FlipFace flip_face(int a, int l) {
 
 // A flip's six external faces, for the adjacency pass (GFlip3D::commit_flips): entry e
 // of flip f is new tet out[a]'s face l, which replaces old tet in[o]'s face lo, whose
-// neighbour there was tet eot (kNoTet: the hull) across its face j. code packs a << 2 | l
-// (bits 0-3), o << 2 | lo (bits 4-7) and j (bits 8-9).
+// neighbour there was tet eot (kNoTet: the hull). code packs a << 2 | l (bits 0-3) and
+// o << 2 | lo (bits 4-7).
 struct ExtFaces {
   std::uint16_t* code;
   tid_t* eot;
@@ -515,12 +513,11 @@ GDEL_HD inline int ext_new_tet(std::uint16_t c) { return (c >> 2) & 3; }
 GDEL_HD inline int ext_new_face(std::uint16_t c) { return c & 3; }
 GDEL_HD inline int ext_old_tet(std::uint16_t c) { return (c >> 6) & 3; }
 GDEL_HD inline int ext_old_face(std::uint16_t c) { return (c >> 4) & 3; }
-GDEL_HD inline int ext_nb_face(std::uint16_t c) { return (c >> 8) & 3; }
 
 // Writes the new tets of flip record r (type Type) into slots out[]: each whole, with one
-// vector store each for its vertices, neighbours, their faces and face flags. An internal
-// face links two new tets (kInternal); an external one gets the neighbour of the old tet
-// there, and an entry for the adjacency pass (ExtFaces, from position `at`, in (a, l)
+// vector store each for its vertices and its neighbour entries (the tets with the faces'
+// flags). An internal face links two new tets (kInternal); an external one gets the
+// neighbour of the old tet there, and an entry for the adjacency pass (ExtFaces, from position `at`, in (a, l)
 // order). The old tets are read before any slot is written (out[0], out[1] are in[0],
 // in[1]). Each old tet's `mark` is set to `stamp` (the adjacency pass finds the flip that
 // took a neighbour by it).
@@ -530,49 +527,42 @@ GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t 
   constexpr int no = Type == 1 ? 2 : 3, nn = 5 - no;
   Tet ot[no];
   tid_t on[no][4];
-  std::uint8_t of[no][4];
 #pragma unroll
   for (int o = 0; o < no; ++o) {
     ot[o] = m.tet[r.in[o]];
-    m.get_adj(r.in[o], on[o], of[o]);
+    m.get_opp_tets(r.in[o], on[o]);
     mark[r.in[o]] = stamp;
   }
   int ne = 0;
 #pragma unroll
   for (int a = 0; a < nn; ++a) {
     tid_t nt[4];
-    std::uint8_t nf[4], fl[4];
 #pragma unroll
     for (int l = 0; l < 4; ++l) {
       const FlipFace x = flip_face<Type>(a, l);
       if (x.inner) {
-        nt[l] = out[x.tet];
-        nf[l] = static_cast<std::uint8_t>(x.face);
-        fl[l] = mesh::kInternal;
+        nt[l] = mesh::nb_entry(out[x.tet], true);
         continue;
       }
       // the old tet's face opposite w: found by compile-time indices (a run-time index
-      // into on/of would put them in the stack)
+      // into on would put it in the stack)
       const vid_t w = r.v[x.face];
       const vid_t* tv = ot[x.tet].v;
       int lo = 3;
       nt[l] = on[x.tet][3];
-      nf[l] = of[x.tet][3];
 #pragma unroll
       for (int c = 2; c >= 0; --c)
         if (tv[c] == w) {
           lo = c;
           nt[l] = on[x.tet][c];
-          nf[l] = of[x.tet][c];
         }
-      fl[l] = 0;
-      ext.code[at + ne] = static_cast<std::uint16_t>(a << 2 | l | (x.tet << 2 | lo) << 4 | (nf[l] & 3) << 8);
+      ext.code[at + ne] = static_cast<std::uint16_t>(a << 2 | l | (x.tet << 2 | lo) << 4);
       ext.eot[at + ne] = nt[l];
       ++ne;
     }
     Tet t;
     flip_new_tet<Type>(r, a, t.v);
-    m.put_tet(out[a], t, nt, nf, fl);
+    m.put_tet(out[a], t, nt);
     m.state[out[a]] = mesh::kAlive | mesh::kChanged;
   }
 }

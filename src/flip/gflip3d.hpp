@@ -834,24 +834,16 @@ class GFlip3D {
         const tid_t c = ch[4 * s + i];
         mesh::Tet x;
         split_child_vertices(o, np[s], i, x.v);
-        tid_t nb[4];
-        std::uint8_t nbf[4], fl[4];
-        for (int kk = 0; kk < 3; ++kk) {
-          const int j = face_vertex(i, kk);
-          nb[kk] = ch[4 * s + j];
-          nbf[kk] = static_cast<std::uint8_t>(split_shared_face(j, i));
-          fl[kk] = mesh::kInternal;
-        }
+        tid_t nb[4];  // (faces 0-2 internal: nb_entry)
+        for (int kk = 0; kk < 3; ++kk) nb[kk] = mesh::nb_entry(ch[4 * s + face_vertex(i, kk)], true);
         const fid_t ext = oo[4 * s + i];
         const tid_t nt = facet_tet(ext);
         const int nf = facet_face(ext);
         const std::int32_t ns = split_of[nt];
         nb[3] = ns >= 0 ? ch[4 * std::int64_t(ns) + nf] : nt;
-        nbf[3] = static_cast<std::uint8_t>(ns >= 0 ? 3 : nf);
-        fl[3] = 0;
-        m.put_tet(c, x, nb, nbf, fl);
+        m.put_tet(c, x, nb);
         m.state[c] = mesh::kAlive | mesh::kChanged;
-        if (ns < 0) m.set_opp_flags(4 * std::int64_t(nt) + nf, pack_facet(c, 3), 0);
+        if (ns < 0) m.nraw[4 * std::int64_t(nt) + nf] = c;  // the neighbour links back (its flag there cleared)
       }
     });
     par::mark(ctx_, "insert: split");
@@ -1323,26 +1315,28 @@ class GFlip3D {
     auto xfast = [=] GDEL_LAMBDA(std::int64_t f) { return xf.template run<false>(f, nullptr); };
     auto xexact = [=] GDEL_LAMBDA(std::int64_t f, auto work) { return xf.template run<true>(f, work); };
     // adjacency across external faces: a neighbour that no flip took links back to the
-    // new facet; one that flip h took is replaced by h's new facet there
+    // new tet, across its face that named the old tet (the entry rewritten, that face's
+    // flag is cleared with it: left set, it made the neighbour skip the face where it
+    // proposes, and the grid's 10^6 points took 566 flip iterations instead of 405,
+    // bench/RESULTS.md, session 61); one that flip h took is replaced by h's new tet there.
     const std::uint16_t* ec = ext_code.data();
     const tid_t* et = ext_tet.data();
     auto link = [=] GDEL_LAMBDA(std::int64_t e) {
       const tid_t u = et[e];
       if (u < 0) return;  // the hull: the new tet already says so
       const std::uint16_t c = ec[e];
-      const int j = ext_nb_face(c);
+      const tid_t old = rec[e / 6].in[ext_old_tet(c)];
       const tid_t mine = rec[e / 6].out[ext_new_tet(c)];
       const std::uint64_t mk = mark[u];
       if ((mk & ~std::uint64_t(0xffffffff)) == stamp) {  // u was taken by flip h of this iteration
         const std::int64_t h = static_cast<std::int64_t>(mk & 0xffffffff);
-        int k = 0;  // h's entry for u's face j
-        while (k < 5 && !(ext_old_face(ec[6 * h + k]) == j && rec[h].in[ext_old_tet(ec[6 * h + k])] == u)) ++k;
-        const std::uint16_t ck = ec[6 * h + k];
-        // (an external face: write_flip cleared its flags)
-        m.set_opp_flags(4 * std::int64_t(mine) + ext_new_face(c),
-                        pack_facet(rec[h].out[ext_new_tet(ck)], ext_new_face(ck)), 0);
+        // h's entry for u's face towards the old tet (the one face u and it share)
+        int k = 0;
+        while (k < 5 && !(et[6 * h + k] == old && rec[h].in[ext_old_tet(ec[6 * h + k])] == u)) ++k;
+        m.nraw[4 * std::int64_t(mine) + ext_new_face(c)] = rec[h].out[ext_new_tet(ec[6 * h + k])];
       } else {
-        m.set_opp_flags(4 * std::int64_t(u) + j, pack_facet(mine, ext_new_face(c)), 0);
+        // (other entries may rewrite u's other entries meanwhile: MeshView::nb_face)
+        par::atomic_store(&m.nraw[4 * std::int64_t(u) + m.nb_face<true>(u, old)], mine);
       }
     };
     // a 3-2 flip's third slot: dead, and on the free stack (TetMesh::reserve_free)

@@ -170,7 +170,7 @@ class SequentialInsertion {
       const std::int64_t d = sl[t];
       for (int i = 0; i < 4; ++i) {
         mv.tet[d].v[i] = c.v[i];
-        mv.set_opp_flags(4 * d + i, c.n[i] >= 0 ? pack_facet(sl[tet_of(c.n[i])], face_of(c.n[i])) : fid_t(-1), 0);
+        mv.set_opp(4 * d + i, c.n[i] >= 0 ? pack_facet(sl[tet_of(c.n[i])], face_of(c.n[i])) : fid_t(-1));
       }
       mv.state[d] = mesh::kAlive;
     });

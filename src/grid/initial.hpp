@@ -306,13 +306,14 @@ bool grid_initial(par::Context<B>& ctx, flip::GFlip3D<B>& alg, par::Buffer<doubl
   tid_t* vt = vert_tet.data();
   Buffer<std::uint8_t, B> state(ctx, static_cast<std::size_t>(ntot));
   par::fill(ctx, state.data(), static_cast<std::size_t>(ntot), std::uint8_t(mesh::kAlive));
-  // the mesh in gFlip3D's layout (records of vertices and neighbour tets; the neighbours'
-  // faces in the face bytes, flags clear) for the walks
+  // the mesh in gFlip3D's layout (records of vertices and neighbour tets; flags clear)
+  // for the walks
   Buffer<mesh::TetRec, B> rec(ctx, static_cast<std::size_t>(ntot));
-  Buffer<std::uint8_t, B> face(ctx, static_cast<std::size_t>(4 * ntot));
-  const mesh::MeshView mv(rec.data(), face.data(), state.data());
-  par::parallel_for(ctx, ntot, [=] GDEL_LAMBDA(std::int64_t t) { mv.tet[t] = T[t]; });
-  par::parallel_for(ctx, 4 * ntot, [=] GDEL_LAMBDA(std::int64_t f) { mv.set_opp_flags(f, O[f], 0); });
+  const mesh::MeshView mv(rec.data(), state.data());
+  par::parallel_for(ctx, ntot, [=] GDEL_LAMBDA(std::int64_t t) {
+    mv.tet[t] = T[t];
+    for (int i = 0; i < 4; ++i) mv.set_opp(4 * t + i, O[4 * t + i]);
+  });
   const flip::Geo g = alg.geo();
   auto locate = [=] GDEL_LAMBDA(std::int64_t q, double* work, bool exact) -> bool {
     const vid_t s = site[voxel_of(q)];

@@ -3,18 +3,19 @@
 //
 //   rec[t]    one 32-byte aligned record a tet slot (one L2 sector):
 //     .t      4 vertex ids (internal ids; kInfinite for the point at infinity)
-//     .n[i]   the neighbour tet across face i (kNoTet: none)
-//             The neighbour across face i as a packed facet (t' << 2 | i'), or -1, is
-//             that tet t' and its face i' (bits 0-1 of the face byte below): 4 bytes and
-//             2 bits instead of a 64-bit packed facet, which tet-face counts past 2^31
-//             would need (MeshView::opp / set_opp pack and unpack). A tet's vertices and
+//     .n[i]   the neighbour tet across face i (kNoTet: none), with face i's one flag,
+//             kInternal (created inside a split or flip: known locally Delaunay), in
+//             the sign bit: u | 2^31 (MeshView::opp_tet and the other accessors decode;
+//             slots stay below 2^31 - 1, TetMesh::kMaxSlots). A tet's vertices and
 //             neighbours in one record: the flips read a tet and its neighbours in one
-//             sector and write a new tet as one whole sector (bench/RESULTS.md, session 59)
-//   face[4t+i] the face byte: bits 0-1 the neighbour's face i', bits 2-4 the face's
-//             FaceFlag bits; one byte per face, so that threads owning different faces
-//             of a tet never share a word, and one array where the neighbour's face and
-//             the flags were two: a tet's adjacency is two accesses (16 + 4 bytes), and
-//             a face rewritten with its flags one store (bench/RESULTS.md, session 54)
+//             sector and write a new tet as one whole sector (bench/RESULTS.md, session
+//             59). The neighbour's own face index is not stored: it is the one of its 4
+//             entries that names this tet (MeshView::nb_face; two tets of a
+//             triangulation share at most one face), in the record that a caller of the
+//             neighbour's face reads anyway for its vertices; and the flag, in the entry
+//             that a relink rewrites, is cleared by it without a write of its own
+//             (bench/RESULTS.md, session 61: a byte a face was one more random sector a
+//             tet read and written in every flip)
 //   state[t]  TetState bits (alive, changed, ...)
 //
 // Slots: a tet slot is alive or free. Free slots sit on a stack. Allocation and
@@ -31,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "gdel/errors.hpp"
 #include "mesh/conventions.hpp"
 #include "parallel/atomic.hpp"
 #include "parallel/primitives.hpp"
@@ -48,8 +50,8 @@ struct alignas(32) TetRec {
 };
 static_assert(sizeof(TetRec) == 32);
 
-// MeshView's indexers into the records: tet[t] the vertices of slot t, opp_t[k] the
-// neighbour tet across face k = 4t+i.
+// MeshView's indexers into the records: tet[t] the vertices of slot t, nraw[k] the entry
+// of face k = 4t+i as stored (nb_entry).
 struct TetsOf {
   TetRec* r;
   GDEL_HD Tet& operator[](std::int64_t t) const { return r[t].t; }
@@ -58,6 +60,12 @@ struct NeighboursOf {
   TetRec* r;
   GDEL_HD tid_t& operator[](std::int64_t k) const { return r[k >> 2].n[k & 3]; }
 };
+// A neighbour entry (TetRec::n): the tet, and with kInternal its sign bit set.
+GDEL_HD constexpr tid_t nb_entry(tid_t u, bool internal) {
+  return internal ? static_cast<tid_t>(static_cast<std::uint32_t>(u) | 0x80000000u) : u;
+}
+GDEL_HD constexpr tid_t nb_tet(tid_t e) { return e < kNoTet ? (e & 0x7fffffff) : e; }
+GDEL_HD constexpr bool nb_internal(tid_t e) { return e < kNoTet; }
 
 enum TetState : std::uint8_t {
   kAlive = 1,
@@ -66,104 +74,105 @@ enum TetState : std::uint8_t {
   kQueued = 8,    // in the next active set being gathered (GFlip3D::commit_flips clears it)
 };
 
+// A face's flag (MeshView::face_flags): the sign bit of its neighbour entry.
 enum FaceFlag : std::uint8_t {
-  kInternal = 1,    // created inside a split/flip: known locally Delaunay
-  kSpecial = 2,     // filter could not decide: redo with exact predicates
-  kSphereFail = 4,  // seen not locally Delaunay
+  kInternal = 1,  // created inside a split/flip: known locally Delaunay
 };
 
 // Plain pointers for use inside kernels (trivially copyable).
 struct MeshView {
   TetRec* rec;
-  std::uint8_t* face;   // face byte of face k: its neighbour's face (bits 0-1), FaceFlag bits (2-4)
-  std::uint8_t* state;
+  std::uint8_t* state;  // TetState bits
   TetsOf tet;           // tet[t]: rec[t].t
-  NeighboursOf opp_t;   // opp_t[k]: neighbour tet across face k = 4t+i (kNoTet: none)
+  NeighboursOf nraw;    // nraw[k]: the entry of face k = 4t+i as stored (nb_entry: read it through opp_tet)
 
   MeshView() = default;
-  GDEL_HD MeshView(TetRec* r, std::uint8_t* f, std::uint8_t* s) : rec(r), face(f), state(s), tet{r}, opp_t{r} {}
+  GDEL_HD MeshView(TetRec* r, std::uint8_t* s) : rec(r), state(s), tet{r}, nraw{r} {}
 
-  static constexpr int kFlagShift = 2;
-  static constexpr std::uint8_t kFaceMask = 3;
-  GDEL_HD static std::uint8_t face_byte(int nb_face, std::uint8_t flags) {
-    return static_cast<std::uint8_t>((nb_face & kFaceMask) | flags << kFlagShift);
-  }
-
+  // The neighbour tet across face k (kNoTet: none).
+  GDEL_HD tid_t opp_tet(std::int64_t k) const { return nb_tet(nraw[k]); }
+  // The neighbour across face k as a packed facet (its tet, and that tet's face back),
+  // -1 for none.
   GDEL_HD fid_t opp(std::int64_t k) const {
-    const tid_t u = opp_t[k];
-    return u < 0 ? fid_t(-1) : pack_facet(u, face[k] & kFaceMask);
+    const tid_t u = opp_tet(k);
+    return u < 0 ? fid_t(-1) : pack_facet(u, nb_face(u, static_cast<tid_t>(k >> 2)));
   }
-  GDEL_HD tid_t opp_tet(std::int64_t k) const { return opp_t[k]; }
-  // The neighbour across face k, its flags kept (a read of the face byte, then a store).
-  GDEL_HD void set_opp(std::int64_t k, fid_t f) const {
-    opp_t[k] = f < 0 ? kNoTet : facet_tet(f);
-    face[k] = static_cast<std::uint8_t>((face[k] & ~kFaceMask) | (f < 0 ? 0 : facet_face(f)));
-  }
-  // The neighbour across face k and the face's flags, in one store each.
-  GDEL_HD void set_opp_flags(std::int64_t k, fid_t f, std::uint8_t flags) const {
-    opp_t[k] = f < 0 ? kNoTet : facet_tet(f);
-    face[k] = face_byte(f < 0 ? 0 : facet_face(f), flags);
+  // The neighbour across face k becomes the tet of packed facet f (-1: none), its flag
+  // clear. Its face there is not stored (nb_face finds it).
+  GDEL_HD void set_opp(std::int64_t k, fid_t f) const { nraw[k] = f < 0 ? kNoTet : facet_tet(f); }
+
+  // The face of tet u whose neighbour is t (3 when none is: an inconsistent mesh, which
+  // check_invariants reports). Concurrent: other threads may be rewriting u's other
+  // entries meanwhile (an entry being rewritten holds the old or the new tet, neither of
+  // them t, so the answer stands); on the host each entry is then read as a relaxed
+  // atomic load, on the GPU the record's half by one vector load as always (32-bit words
+  // do not tear).
+  template <bool Concurrent = false>
+  GDEL_HD int nb_face(tid_t u, tid_t t) const {
+    tid_t n[4];
+#if defined(__CUDA_ARCH__)
+    get_opp_tets(u, n);
+#else
+    if constexpr (Concurrent) {
+      for (int k = 0; k < 4; ++k) n[k] = nb_tet(par::atomic_load(&rec[u].n[k]));
+    } else {
+      get_opp_tets(u, n);
+    }
+#endif
+    int j = 3;
+    for (int k = 2; k >= 0; --k)
+      if (n[k] == t) j = k;
+    return j;
   }
 
-  // A tet's four neighbour tets, their faces and its face flags, each as one access (16
-  // and 4 bytes: per tet the record's half and the face bytes are 16- and 4-byte
-  // aligned) instead of four.
-  GDEL_HD void get_opp_tets(tid_t t, tid_t nt[4]) const {
+  // A tet's four entries as stored, as one access (16 bytes, 16-byte aligned).
+  GDEL_HD void get_entries(tid_t t, tid_t e[4]) const {
 #if defined(__CUDA_ARCH__)
     const int4 q = *reinterpret_cast<const int4*>(rec[t].n);
-    nt[0] = q.x, nt[1] = q.y, nt[2] = q.z, nt[3] = q.w;
+    e[0] = q.x, e[1] = q.y, e[2] = q.z, e[3] = q.w;
 #else
-    std::memcpy(nt, rec[t].n, 4 * sizeof(tid_t));
+    std::memcpy(e, rec[t].n, 4 * sizeof(tid_t));
 #endif
   }
-  GDEL_HD void get_face_bytes(tid_t t, std::uint8_t b[4]) const {
-    const std::uint8_t* p = face + 4 * std::int64_t(t);
+  // A tet's four neighbour tets (one access).
+  GDEL_HD void get_opp_tets(tid_t t, tid_t nt[4]) const {
+    get_entries(t, nt);
+    for (int i = 0; i < 4; ++i) nt[i] = nb_tet(nt[i]);
+  }
+  // A tet's four neighbour tets and its faces' flags (kInternal or 0), from one access.
+  GDEL_HD void get_adj(tid_t t, tid_t nt[4], std::uint8_t fl[4]) const {
+    get_entries(t, nt);
+    for (int i = 0; i < 4; ++i) {
+      fl[i] = nb_internal(nt[i]) ? std::uint8_t(kInternal) : std::uint8_t(0);
+      nt[i] = nb_tet(nt[i]);
+    }
+  }
+  // Writes a tet's four entries (nb_entry: the tets with their faces' flags).
+  GDEL_HD void put_entries(tid_t t, const tid_t e[4]) const {
 #if defined(__CUDA_ARCH__)
-    const uchar4 q = *reinterpret_cast<const uchar4*>(p);
-    b[0] = q.x, b[1] = q.y, b[2] = q.z, b[3] = q.w;
+    *reinterpret_cast<int4*>(rec[t].n) = make_int4(e[0], e[1], e[2], e[3]);
 #else
-    std::memcpy(b, p, 4);
+    std::memcpy(rec[t].n, e, 4 * sizeof(tid_t));
 #endif
   }
-  GDEL_HD void get_face_flags(tid_t t, std::uint8_t fl[4]) const {
-    get_face_bytes(t, fl);
-    for (int i = 0; i < 4; ++i) fl[i] = static_cast<std::uint8_t>(fl[i] >> kFlagShift);
-  }
-  GDEL_HD void get_adj(tid_t t, tid_t nt[4], std::uint8_t nf[4]) const {
-    get_opp_tets(t, nt);
-    get_face_bytes(t, nf);
-    for (int i = 0; i < 4; ++i) nf[i] &= kFaceMask;
-  }
-  GDEL_HD void put_adj(tid_t t, const tid_t nt[4], const std::uint8_t nf[4], const std::uint8_t fl[4]) const {
-    const std::int64_t k = 4 * std::int64_t(t);
-    std::uint8_t b[4];
-    for (int i = 0; i < 4; ++i) b[i] = face_byte(nf[i], fl[i]);
-#if defined(__CUDA_ARCH__)
-    *reinterpret_cast<int4*>(rec[t].n) = make_int4(nt[0], nt[1], nt[2], nt[3]);
-    *reinterpret_cast<uchar4*>(face + k) = make_uchar4(b[0], b[1], b[2], b[3]);
-#else
-    std::memcpy(rec[t].n, nt, 4 * sizeof(tid_t));
-    std::memcpy(face + k, b, 4);
-#endif
-  }
-  // A whole new tet: its vertices and neighbours (the record's two halves, back to back,
-  // so the sector is written whole), then its face bytes.
-  GDEL_HD void put_tet(tid_t t, const Tet& x, const tid_t nt[4], const std::uint8_t nf[4],
-                       const std::uint8_t fl[4]) const {
+  // A whole new tet: its vertices and entries (the record's two halves, back to back,
+  // so the sector is written whole).
+  GDEL_HD void put_tet(tid_t t, const Tet& x, const tid_t e[4]) const {
     rec[t].t = x;  // (Tet is 16-byte aligned: one vector store)
-    put_adj(t, nt, nf, fl);
+    put_entries(t, e);
   }
 
   GDEL_HD bool alive(tid_t t) const { return (state[t] & kAlive) != 0; }
-  GDEL_HD std::uint8_t face_flags(tid_t t, int i) const { return face[4 * std::int64_t(t) + i] >> kFlagShift; }
-  // The face's flags, its neighbour's face kept (a read of the face byte, then a store).
+  GDEL_HD std::uint8_t face_flags(tid_t t, int i) const {
+    return nb_internal(nraw[4 * std::int64_t(t) + i]) ? std::uint8_t(kInternal) : std::uint8_t(0);
+  }
   GDEL_HD void set_face_flags(tid_t t, int i, std::uint8_t f) const {
-    std::uint8_t& b = face[4 * std::int64_t(t) + i];
-    b = face_byte(b, f);
+    tid_t& e = nraw[4 * std::int64_t(t) + i];
+    e = nb_entry(nb_tet(e), e != kNoTet && (f & kInternal));
   }
   GDEL_HD void link(tid_t t, int i, tid_t u, int j) const {
-    set_opp(4 * std::int64_t(t) + i, pack_facet(u, j));
-    set_opp(4 * std::int64_t(u) + j, pack_facet(t, i));
+    nraw[4 * std::int64_t(t) + i] = u;
+    nraw[4 * std::int64_t(u) + j] = t;
   }
 };
 
@@ -182,8 +191,10 @@ struct SlotSource {
 template <class B>
 class TetMesh {
  public:
+  // Slots below 2^31 - 1: an entry with the flag set (nb_entry) is then never kNoTet.
+  static constexpr std::int64_t kMaxSlots = (std::int64_t(1) << 31) - 2;
   explicit TetMesh(par::Context<B>& ctx)
-      : ctx_(&ctx), rec_(ctx), face_(ctx), state_(ctx), free_(ctx) {}
+      : ctx_(&ctx), rec_(ctx), state_(ctx), free_(ctx) {}
 
   par::Context<B>& context() { return *ctx_; }
   std::int64_t capacity() const { return static_cast<std::int64_t>(rec_.size()); }
@@ -203,13 +214,15 @@ class TetMesh {
   void reserve(std::int64_t n) {
     std::int64_t old = capacity();
     if (n <= old) return;
-    std::int64_t cap = std::max<std::int64_t>(n, old + old / 4);
+    if (n > kMaxSlots)
+      throw Error("tet mesh: " + std::to_string(n) + " tet slots needed; tet ids are 32-bit (at most " +
+                  std::to_string(kMaxSlots) + " slots, about 3*10^8 points)");
+    std::int64_t cap = std::min(kMaxSlots, std::max<std::int64_t>(n, old + old / 4));
     auto grow = [cap](auto& buf, std::int64_t per) {
       buf.reserve(static_cast<std::size_t>(per * cap));
       buf.resize(static_cast<std::size_t>(per * cap));
     };
     grow(rec_, 1);
-    grow(face_, 4);
     grow(state_, 1);
     std::uint8_t* st = state_.data();
     par::parallel_for(*ctx_, cap - old, [=] GDEL_LAMBDA(std::int64_t k) { st[old + k] = 0; });
@@ -258,7 +271,6 @@ class TetMesh {
     const std::int64_t n = o.size_;
     reserve(n);
     M::copy(*ctx_, rec_.data(), o.rec_.data(), static_cast<std::size_t>(n) * sizeof(TetRec));
-    M::copy(*ctx_, face_.data(), o.face_.data(), static_cast<std::size_t>(4 * n));
     M::copy(*ctx_, state_.data(), o.state_.data(), static_cast<std::size_t>(n));
     if (free_.size() < static_cast<std::size_t>(o.free_count_)) free_.resize(static_cast<std::size_t>(o.free_count_));
     M::copy(*ctx_, free_.data(), o.free_.data(), static_cast<std::size_t>(o.free_count_) * sizeof(tid_t));
@@ -271,7 +283,7 @@ class TetMesh {
   }
 
   MeshView view() {
-    return MeshView(rec_.data(), face_.data(), state_.data());
+    return MeshView(rec_.data(), state_.data());
   }
 
   // Moves alive tets to [0, alive) keeping their order, remaps neighbour references;
@@ -345,8 +357,8 @@ class TetMesh {
   // Rebuilds the arrays with tet t at slot rm[t] (rm[t] < 0: dropped), references
   // remapped; slots [0, alive) are then in use and the free stack is empty. One array at
   // a time through one scratch array of the alive tets, copied back in place (shrink:
-  // the face bytes and states replaced by new arrays of `alive` slots instead, and the
-  // records too when whole, else kept in their storage; the capacity is then `alive`).
+  // the states replaced by a new array of `alive` slots instead, and the records too
+  // when whole, else kept in their storage; the capacity is then `alive`).
   // The records move whole (through a scratch of 32 bytes per alive tet, which with
   // shrink becomes the records' array) or as their two halves in turn (16 bytes per alive
   // tet).
@@ -356,7 +368,8 @@ class TetMesh {
                    bool whole = false) {
     const std::int64_t n = size();
     const std::size_t na = static_cast<std::size_t>(std::max<std::int64_t>(alive, 1));
-    auto nb = [=] GDEL_LAMBDA(tid_t u) { return u < 0 ? u : rm[u]; };
+    // (an entry keeps its flag: nb_entry)
+    auto nb = [=] GDEL_LAMBDA(tid_t e) { return e == kNoTet ? e : nb_entry(rm[nb_tet(e)], nb_internal(e)); };
     if (whole) {
       par::Buffer<TetRec, B> scratch(*ctx_, na);
       remap_into(rec_.data(), scratch.data(), 1, alive, rm, from, [=] GDEL_LAMBDA(const TetRec& x) {
@@ -386,8 +399,7 @@ class TetMesh {
       // shrink: `alive` records in use (the storage stays; a later reserve() reuses it)
       if (shrink) rec_.resize(na);
     }
-    remap_array(face_, 4, alive, shrink, rm, from);
-    remap_array(state_, 1, alive, shrink, rm, from);
+    remap_states(alive, shrink, rm, from);
     if (!shrink && n > alive) {  // the slots past the alive tets are dead
       std::uint8_t* st = state_.data();
       par::parallel_for(*ctx_, n - alive, [=] GDEL_LAMBDA(std::int64_t k) { st[alive + k] = 0; });
@@ -412,24 +424,17 @@ class TetMesh {
       });
     }
   }
-  // apply_remap's step for a byte array of `per` bytes a slot (the face bytes, the
-  // states): moved as `per`-byte groups through a scratch copied back, or (shrink) into
-  // a new array of `alive` slots.
-  void remap_array(par::Buffer<std::uint8_t, B>& buf, std::int64_t per, std::int64_t alive, bool shrink,
-                   const tid_t* rm, const tid_t* from) {
-    par::Buffer<std::uint8_t, B> nb(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(per * alive, 1)));
+  // apply_remap's step for the state bytes: moved through a scratch copied back, or
+  // (shrink) into a new array of `alive` slots.
+  void remap_states(std::int64_t alive, bool shrink, const tid_t* rm, const tid_t* from) {
+    par::Buffer<std::uint8_t, B>& buf = state_;
+    par::Buffer<std::uint8_t, B> nb(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(alive, 1)));
     std::uint8_t* dst = nb.data();
-    const std::uint8_t* src = buf.data();
-    if (per == 4) {
-      remap_into(reinterpret_cast<const std::uint32_t*>(src), reinterpret_cast<std::uint32_t*>(dst), 1, alive, rm, from,
-                 [] GDEL_LAMBDA(std::uint32_t v) { return v; });
-    } else {
-      remap_into(src, dst, 1, alive, rm, from, [] GDEL_LAMBDA(std::uint8_t v) { return v; });
-    }
+    remap_into(buf.data(), dst, 1, alive, rm, from, [] GDEL_LAMBDA(std::uint8_t v) { return v; });
     if (shrink)
       buf = std::move(nb);
     else
-      par::detail::Memory<B>::copy(*ctx_, buf.data(), dst, static_cast<std::size_t>(per * alive));
+      par::detail::Memory<B>::copy(*ctx_, buf.data(), dst, static_cast<std::size_t>(alive));
   }
 
   // The records (vertices and neighbour tets of each slot).
@@ -439,26 +444,28 @@ class TetMesh {
     TetRec* r = rec_.data();
     par::parallel_for(*ctx_, count, [=] GDEL_LAMBDA(std::int64_t t) { r[t].t = src[t]; });
   }
-  // Adjacency: packed facets (4 per slot, -1: none) to / from the records and face bytes.
+  // Adjacency: packed facets (4 per slot, -1: none) to / from the records. A neighbour
+  // that does not name the tet back gets its face 3 here (MeshView::nb_face);
+  // check_invariants reports it.
   std::vector<fid_t> opp_to_host() const {
     const std::vector<TetRec> r = rec_.to_host();
-    const std::vector<std::uint8_t> f = face_.to_host();
     std::vector<fid_t> o(4 * r.size());
     for (std::size_t k = 0; k < o.size(); ++k) {
-      const tid_t t = r[k >> 2].n[k & 3];
-      o[k] = t < 0 ? fid_t(-1) : pack_facet(t, f[k] & MeshView::kFaceMask);
+      const tid_t t = nb_tet(r[k >> 2].n[k & 3]);
+      int j = 3;
+      if (t >= 0 && static_cast<std::size_t>(t) < r.size())
+        for (int l = 2; l >= 0; --l)
+          if (nb_tet(r[static_cast<std::size_t>(t)].n[l]) == static_cast<tid_t>(k >> 2)) j = l;
+      o[k] = t < 0 ? fid_t(-1) : pack_facet(t, j);
     }
     return o;
   }
-  // Slots [0, count / 4) from count packed facets in backend memory; their face flags
-  // cleared.
+  // Slots [0, count / 4) from count packed facets in backend memory (their tets; the
+  // faces there are implied), their face flags cleared.
   void set_opp_from(const fid_t* src, std::int64_t count) {
     const MeshView v = view();
-    par::parallel_for(*ctx_, count, [=] GDEL_LAMBDA(std::int64_t k) { v.set_opp_flags(k, src[k], 0); });
+    par::parallel_for(*ctx_, count, [=] GDEL_LAMBDA(std::int64_t k) { v.set_opp(k, src[k]); });
   }
-  // The face bytes (neighbours' faces, face flags), for an output stage that reads only
-  // the records (MeshView::tet, MeshView::opp_tet) from here on.
-  void release_faces() { face_.release(); }
   // The output's tets from the records, in place: tet t with pos[t + 1] > pos[t] becomes
   // entries [4 pos[t], 4 pos[t] + 4) = vx(its vertex i), in an array of n (>= 4 pos[size])
   // 32-bit entries that takes over the records' storage (the mesh has none after this:
@@ -484,7 +491,6 @@ class TetMesh {
     return std::move(rec_).template recast<std::int32_t>(static_cast<std::size_t>(n));
   }
   par::Buffer<std::uint8_t, B>& state() { return state_; }
-  par::Buffer<std::uint8_t, B>& face_bytes() { return face_; }  // (MeshView::face)
   // Sets the high-water mark (slots [0, size) in use) and empties the free stack
   // (e.g. after building tets directly).
   void set_size(std::int64_t size) {
@@ -496,7 +502,6 @@ class TetMesh {
  private:
   par::Context<B>* ctx_;
   par::Buffer<TetRec, B> rec_;
-  par::Buffer<std::uint8_t, B> face_;  // the face bytes (MeshView::face)
   par::Buffer<std::uint8_t, B> state_;
   par::Buffer<tid_t, B> free_;  // the free stack: as long as it has ever been deep, not the capacity
   std::int64_t size_ = 0;        // high-water mark of used slots

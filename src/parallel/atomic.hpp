@@ -41,6 +41,11 @@ GDEL_HD GDEL_FORCEINLINE bool atomic_cas(T* p, T expected, T desired) {
   return r.compare_exchange_strong(expected, desired, cuda::memory_order_relaxed);
 }
 template <class T>
+GDEL_HD GDEL_FORCEINLINE void atomic_store(T* p, T v) {
+  cuda::atomic_ref<T, cuda::thread_scope_device> r(*p);
+  r.store(v, cuda::memory_order_relaxed);
+}
+template <class T>
 GDEL_HD GDEL_FORCEINLINE T atomic_load(const T* p) {
   cuda::atomic_ref<T, cuda::thread_scope_device> r(*const_cast<T*>(p));
   return r.load(cuda::memory_order_relaxed);

@@ -430,11 +430,10 @@ class GDel3D {
         par::count_indices(ctx_, static_cast<std::size_t>(nt), [=] GDEL_LAMBDA(I64 t) { return flp[t] == 0; }) +
         flat_stars;
     // The mesh is consumed from here on, one array at a time, so that the output is
-    // never beside the whole mesh: the states and face bytes first, then the neighbours
-    // read out of the records, which then become the output's tets in place
+    // never beside the whole mesh: the states first, then the neighbours read out of the
+    // records, which then become the output's tets in place
     // (TetMesh::take_tets).
     mesh_.state().release();
-    mesh_.release_faces();  // (the neighbours below: their tets alone)
     nbr.resize(static_cast<std::size_t>(4 * nout));
     std::int32_t* np = nbr.data();
     par::parallel_for(ctx_, nt, [=] GDEL_LAMBDA(I64 t) {

@@ -34,11 +34,11 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather, bool whole) {
       v.set_opp(4 * b + i, -1);
     }
     v.state[a] = v.state[b] = kAlive;
-    for (int i = 0; i < 4; ++i) v.set_face_flags(a, i, 0), v.set_face_flags(b, i, 0);
-    v.set_face_flags(a, 3, kSpecial | kSphereFail);  // flags, then the neighbour: both kept
-    v.link(a, 3, b, 3);  // face opposite vertex 3 (= 0,1,2) in both
-    v.set_face_flags(b, 3, kInternal);                // the neighbour, then flags: both kept
-    v.set_face_flags(a, 2, kSpecial | kSphereFail);
+    v.set_face_flags(a, 2, kInternal);  // no neighbour there: no flag either
+    v.link(a, 3, b, 3);                 // face opposite vertex 3 (= 0,1,2) in both
+    v.set_face_flags(a, 3, kInternal);  // the neighbour, then the flag: both kept
+    v.set_face_flags(b, 3, kInternal);
+    v.nraw[4 * a + 3] = b;              // a relink clears the flag
   });
   auto probs = check_invariants(m, 5);
   EXPECT_TRUE(probs.ok()) << (probs.items.empty() ? "" : probs.items[0]);
@@ -52,18 +52,23 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather, bool whole) {
       flp[4 + i] = v.face_flags(hi, static_cast<int>(i));
     });
     const auto ff = fl.to_host();
-    EXPECT_EQ(ff[2], kSpecial | kSphereFail);
-    EXPECT_EQ(ff[3], kSpecial | kSphereFail);
+    EXPECT_EQ(ff[2], 0);
+    EXPECT_EQ(ff[3], 0);
     EXPECT_EQ(ff[4 + 3], kInternal);
     EXPECT_EQ(ff[0], 0);
+    EXPECT_EQ(m.records().to_host()[hi].n[3], nb_entry(lo, true));  // the flag: the entry's sign bit
     const auto op = m.opp_to_host();
     EXPECT_EQ(op[4 * lo + 3], pack_facet(hi, 3));
     EXPECT_EQ(op[4 * hi + 3], pack_facet(lo, 3));
   }
 
-  // Break symmetry: detected.
-  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.set_opp(4 * 0 + 3, pack_facet(1, 2)); });
+  // Break symmetry (a neighbour that does not name the tet back): detected.
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.set_opp(4 * 1 + 3, -1); });
   EXPECT_FALSE(check_invariants(m, 5).ok());
+  EXPECT_EQ(m.opp_to_host()[4 * 0 + 3], pack_facet(1, 3));  // (no face names slot 0: face 3)
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.set_opp(4 * 1 + 2, pack_facet(0, 3)); });
+  EXPECT_FALSE(check_invariants(m, 5).ok());  // glued through faces 3 and 2: the faces differ
+  par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.set_opp(4 * 1 + 2, -1); });
   par::parallel_for(ctx, 1, [=] GDEL_LAMBDA(std::int64_t) { v.link(0, 3, 1, 3); });
   EXPECT_TRUE(check_invariants(m, 5).ok());
 
@@ -90,6 +95,7 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather, bool whole) {
     v.state[0] = v.state[3] = kAlive;
     v.state[2] = 0;
     v.link(1, 3, 3, 3);  // arbitrary glue for remap test (not geometric)
+    v.set_face_flags(3, 3, kInternal);
   });
   // reorder by a key (largest first vertex first): slots follow the key, links follow the slots
   {
@@ -109,8 +115,9 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather, bool whole) {
     EXPECT_EQ(stv[0] & kAlive, kAlive);
     EXPECT_EQ(stv[2] & kAlive, kAlive);
     EXPECT_EQ(stv[3], 0);
-    // old slot 0's face 2
-    EXPECT_EQ(m.face_bytes().to_host()[4 * 1 + 2] >> MeshView::kFlagShift, kSpecial | kSphereFail);
+    // old slot 3's face 3: its flag moved with its entry, which names old slot 1's new slot
+    EXPECT_EQ(tv[0].n[3], nb_entry(2, true));
+    EXPECT_EQ(tv[2].n[3], 0);
     // and back to slot order for the compaction checks below
     m.reorder([] GDEL_LAMBDA(const Tet& t) { return tid_t(t.v[0] == 5 ? 0 : t.v[0] == 1 ? 1 : 3); }, 4, false, gather, whole);
   }
@@ -126,8 +133,9 @@ void tet_mesh_cases(par::Context<B>& ctx, bool gather, bool whole) {
   EXPECT_EQ(m.size(), 3);
   EXPECT_EQ(m.capacity(), 3);
   EXPECT_EQ(m.state().size(), 3u);
-  EXPECT_EQ(m.face_bytes().size(), 12u);
-  if (whole) EXPECT_EQ(m.records().capacity(), 3u);
+  if (whole) {
+    EXPECT_EQ(m.records().capacity(), 3u);
+  }
   auto ts = m.records().to_host();
   EXPECT_EQ(ts[0].t.v[0], 1);
   EXPECT_EQ(ts[1].t.v[0], 5);
