@@ -209,10 +209,10 @@ Triangulation delaunay(std::span<const double> points, const Options& options = 
 
 // The device memory a CUDA run is expected to need for n points (bytes): a fixed 64 MiB
 // plus what uniform input was measured to need (bench/RESULTS.md): for gflip3d / gdel3d
-// (Auto) 470 bytes per point plus 160 bytes for each flip of the largest flip iteration
-// (1.2n, at most 2^24: FlipConfig::max_flips_per_iteration), i.e. 662 bytes per point
-// up to 1.4*10^7 points (729 at 10^6 with the fixed part) and 498 at 10^8 (measured at
-// 10^6, 10^7 and 10^8: 633, 550 and 467); 5 400 per point for
+// (Auto) 450 bytes per point plus 160 bytes for each flip of the largest flip iteration
+// (1.2n, at most 2^24: FlipConfig::max_flips_per_iteration), i.e. 642 bytes per point
+// up to 1.4*10^7 points (709 at 10^6 with the fixed part) and 478 at 10^8 (measured at
+// 10^6, 10^7 and 10^8: 601, 520 and 454); 5 400 per point for
 // gstar4d, and the same for gdel::regular (gReg3D, `weighted`). Input whose repair splays
 // many or large stars needs more (gdel3d at 10^6: 1.9x on the grid and 1.8x on the
 // exactly cospherical sphere (1 389 and 1 319 bytes per point); gstar4d 1.8x on the thin

@@ -18,14 +18,15 @@ const char* to_string(Backend b) {
 std::size_t estimated_device_bytes(std::int64_t n, Algorithm algorithm, bool weighted) {
   const double np = static_cast<double>(std::max<std::int64_t>(n, 0));
   if (weighted || algorithm == Algorithm::gstar4d) return (std::size_t(64) << 20) + static_cast<std::size_t>(5400.0 * np);
-  // gflip3d / gdel3d: 470 bytes per point (the mesh at about 7.2 tet slots per point, 37
+  // gflip3d / gdel3d: 450 bytes per point (the mesh at about 7.2 tet slots per point, 33
   // bytes each, the points and their work arrays, the output) plus the largest flip
   // iteration's temporaries, 160 bytes per flip for up to 1.2n flips, at most 2^24 of them
   // per iteration (FlipConfig::max_flips_per_iteration). An envelope of the peaks measured
-  // on uniform input (bench/RESULTS.md, session 57): 633, 550 and 467 bytes per point at
-  // 10^6, 10^7 and 10^8 against an estimate of 729, 669 and 498.
+  // on uniform input (bench/RESULTS.md, session 61): 601, 520 and 454 bytes per point at
+  // 10^6, 10^7 and 10^8 against an estimate of 709, 649 and 478 (470 bytes per point
+  // before the tets' face bytes went, session 61).
   const double flips = std::min(1.2 * np, 16777216.0);
-  return (std::size_t(64) << 20) + static_cast<std::size_t>(470.0 * np + 160.0 * flips);
+  return (std::size_t(64) << 20) + static_cast<std::size_t>(450.0 * np + 160.0 * flips);
 }
 
 const char* to_string(Initial i) {
