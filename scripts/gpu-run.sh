@@ -136,6 +136,25 @@ gpu_tests() {
   done
 }
 
+# uniform 10^7 (medians of 3) R7 times and uniform, grid and sphere 10^6 (medians of 5) R6
+# times, gdel-bench-old then gdel-bench, and at 10^7 also each runner given after them
+# (bench_NAME, as bench: steps TAG_e7_NAME1, ...): old_new TAG R7 R6 [bench_NAME...]
+old_new() {
+  local tag=$1 r7=$2 r6=$3
+  shift 3
+  for r in $(seq "$r7"); do
+    bench_old "${tag}_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    bench "${tag}_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    for x in "$@"; do
+      "$x" "${tag}_e7_${x#bench_}$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    done
+  done
+  for r in $(seq "$r6"); do
+    bench_old "${tag}_e6_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    bench "${tag}_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+  done
+}
+
 # uniform, grid and sphere 10^6 (medians of 5) under each GDEL_SPLIT_EXACT value given,
 # ROUNDS times (session 49): split_rounds TAG VALUES...
 split_rounds() {
@@ -1804,55 +1823,21 @@ PY
     bench s60d_e6_new 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
     ;;
   s61a)  # session 61: no face bytes (a neighbour's face found in its record, the faces' flags in the state byte) against HEAD faa27de (old): uniform 10^7 x3, 10^6 x2, profiles, uniform 10^8 (peak B/point), every GPU test
-    for r in 1 2 3; do
-      bench_old "s61a_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-      bench "s61a_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    done
-    for r in 1 2; do
-      bench_old "s61a_e6_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      bench "s61a_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
+    old_new s61a 3 2
     GDEL_PROFILE=1 bench_old s61a_e7p_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s61a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     bench s61a_e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     gpu_tests
     step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
-  s61b)  # session 61: the final binaries (no face bytes; a relinked neighbour's flag cleared as before) against HEAD faa27de (old) and s61a's binary (noclear: the flag left set): uniform 10^7 x3, 10^6 x2, a profile, uniform 10^8, every GPU test
+  s61b|s61c)  # session 61: final binaries against HEAD faa27de (old) and s61a's binary (noclear: a relinked neighbour's flag left set); s61b: the flag cleared by an atomic AND on the state byte, s61c: the flags in the neighbour entries' sign bits (a relink clears them): uniform 10^7 x3, 10^6 x2, a profile, uniform 10^8, every GPU test
     bench_noclear() {
       local gb="$bin/gdel-bench-noclear"
       bench "$@"
     }
-    for r in 1 2 3; do
-      bench_old "s61b_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-      bench "s61b_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-      bench_noclear "s61b_e7_noclear$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    done
-    for r in 1 2; do
-      bench_old "s61b_e6_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      bench "s61b_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
-    GDEL_PROFILE=1 bench s61b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    bench s61b_e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
-    ;;
-  s61c)  # session 61: the final binaries (the faces' flags in the neighbour entries' sign bits: a relink clears them) against HEAD faa27de (old) and s61a's binary (noclear): uniform 10^7 x3, 10^6 x2, a profile, uniform 10^8, every GPU test
-    bench_noclear() {
-      local gb="$bin/gdel-bench-noclear"
-      bench "$@"
-    }
-    for r in 1 2 3; do
-      bench_old "s61c_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-      bench "s61c_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-      bench_noclear "s61c_e7_noclear$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    done
-    for r in 1 2; do
-      bench_old "s61c_e6_old$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-      bench "s61c_e6_new$r" 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
-    done
-    GDEL_PROFILE=1 bench s61c_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    bench s61c_e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    old_new "$plan" 3 2 bench_noclear
+    GDEL_PROFILE=1 bench "${plan}_e7p_new" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    bench "${plan}_e8" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     gpu_tests
     step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
