@@ -1841,6 +1841,12 @@ PY
     gpu_tests
     step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
+  s61d)  # session 61: the final binaries on an H200 against HEAD faa27de (old): uniform 10^7 x3, 10^6 x1, uniform 2*10^8 where the card holds it
+    old_new s61d 3 1
+    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+      bench s61d_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    fi
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
