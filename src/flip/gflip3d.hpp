@@ -1147,7 +1147,8 @@ class GFlip3D {
       for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == vote_value(vstamp, A[k]);
       return ok;
     };
-    if (na <= team_max_) {
+    const bool team = na <= team_max_;  // every step of this iteration in one team, or each a pass
+    if (team) {
       // One team does what the steps below do, with the same results: the lists come
       // out of sums in index order. A small iteration's fifteen-odd launches were most of
       // its time (bench/RESULTS.md, session 27: 29 kernels of 1.6-16 us each).
@@ -1220,7 +1221,7 @@ class GFlip3D {
     if (trace_ > 1)  // (na: a bound where the active set was deferred; flips before any cap)
       std::fprintf(stderr, "gflip3d flip iteration: active %lld, flips %lld (2-3 %lld), %s\n",
                    static_cast<long long>(na), static_cast<long long>(nfl), static_cast<long long>(n23),
-                   na <= team_max_ ? "team" : "large");
+                   team ? "team" : "large");
     if (np == 0) {
       active_.release();
       return 0;
@@ -1371,7 +1372,6 @@ class GFlip3D {
       if (t >= 0) m.state[t] |= mesh::kQueued;
     };
     const std::int64_t abound = np + 3 * nfl;  // the next active set's bound
-    const bool team = na <= team_max_;  // the steps below in one team, as the proposals and votes were
     const bool list_in_team = team && !active_by_slots_;
     const bool list_large = B::is_device && !team && !active_by_slots_ && active_listed_large_ &&
                             abound * kListedActiveRatio < mesh_.size();
