@@ -154,6 +154,9 @@ GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, W
 // Calls f(bv, apex, i) for the faces i of tet b (vertices bv, apex[] across its faces)
 // that have a neighbour, are not internal and are not locally Delaunay, in order, until
 // f returns something other than -1; returns that value, -1, or kUndecidedResult.
+// (All four apexes are loaded first, internal faces' too: loading those only for a tet
+// with a face that is not locally Delaunay, which most active tets lack, made the large
+// iterations' proposals slower, 104 -> 112 ms at 10^7, bench/RESULTS.md, session 62.)
 template <bool Exact, class Work, class F>
 GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, Work work, F f) {
   if (!m.alive(b)) return -1;
@@ -502,25 +505,24 @@ GDEL_HD constexpr FlipFace flip_face(int a, int l) {
 }
 
 // A flip's six external faces, for the adjacency pass (GFlip3D::commit_flips): entry e
-// of flip f is new tet out[a]'s face l, which replaces old tet in[o]'s face lo, whose
+// of flip f is new tet out[a]'s face l, which replaces a face of old tet in[o], whose
 // neighbour there was tet eot (kNoTet: the hull). code packs a << 2 | l (bits 0-3) and
-// o << 2 | lo (bits 4-7).
+// o (bits 4-5).
 struct ExtFaces {
   std::uint16_t* code;
   tid_t* eot;
 };
 GDEL_HD inline int ext_new_tet(std::uint16_t c) { return (c >> 2) & 3; }
 GDEL_HD inline int ext_new_face(std::uint16_t c) { return c & 3; }
-GDEL_HD inline int ext_old_tet(std::uint16_t c) { return (c >> 6) & 3; }
-GDEL_HD inline int ext_old_face(std::uint16_t c) { return (c >> 4) & 3; }
+GDEL_HD inline int ext_old_tet(std::uint16_t c) { return (c >> 4) & 3; }
 
 // Writes the new tets of flip record r (type Type) into slots out[]: each whole, with one
 // vector store each for its vertices and its neighbour entries (the tets with the faces'
 // flags). An internal face links two new tets (kInternal); an external one gets the
-// neighbour of the old tet there, and an entry for the adjacency pass (ExtFaces, from position `at`, in (a, l)
-// order). The old tets are read before any slot is written (out[0], out[1] are in[0],
-// in[1]). Each old tet's `mark` is set to `stamp` (the adjacency pass finds the flip that
-// took a neighbour by it).
+// neighbour of the old tet there, and an entry for the adjacency pass (ExtFaces, from
+// position `at`, in (a, l) order). The old tets are read before any slot is written
+// (out[0], out[1] are in[0], in[1]). Each old tet's `mark` is set to `stamp` (the
+// adjacency pass finds the flip that took a neighbour by it).
 template <int Type>
 GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t out[3], std::uint64_t* mark,
                                std::uint64_t stamp, const ExtFaces& ext, std::int64_t at) {
@@ -548,15 +550,11 @@ GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t 
       // into on would put it in the stack)
       const vid_t w = r.v[x.face];
       const vid_t* tv = ot[x.tet].v;
-      int lo = 3;
       nt[l] = on[x.tet][3];
 #pragma unroll
       for (int c = 2; c >= 0; --c)
-        if (tv[c] == w) {
-          lo = c;
-          nt[l] = on[x.tet][c];
-        }
-      ext.code[at + ne] = static_cast<std::uint16_t>(a << 2 | l | (x.tet << 2 | lo) << 4);
+        if (tv[c] == w) nt[l] = on[x.tet][c];
+      ext.code[at + ne] = static_cast<std::uint16_t>(a << 2 | l | x.tet << 4);
       ext.eot[at + ne] = nt[l];
       ++ne;
     }

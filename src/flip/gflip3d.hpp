@@ -1219,9 +1219,9 @@ class GFlip3D {
     exact_seen_ = h[3] - tally_seen_;  // (the last records pass and this propose)
     tally_seen_ = h[3];
     if (trace_ > 1)  // (na: a bound where the active set was deferred; flips before any cap)
-      std::fprintf(stderr, "gflip3d flip iteration: active %lld, flips %lld (2-3 %lld), %s\n",
+      std::fprintf(stderr, "gflip3d flip iteration: active %lld, flips %lld (2-3 %lld), %s, proposers %lld\n",
                    static_cast<long long>(na), static_cast<long long>(nfl), static_cast<long long>(n23),
-                   team ? "team" : "large");
+                   team ? "team" : "large", static_cast<long long>(np));
     if (np == 0) {
       active_.release();
       return 0;

@@ -79,6 +79,16 @@ enum FaceFlag : std::uint8_t {
   kInternal = 1,  // created inside a split/flip: known locally Delaunay
 };
 
+// The face of a tet with neighbour tets n (decoded entries) whose neighbour is t: the
+// first of faces 0-2 that names t, else 3 (MeshView::nb_face; an inconsistent mesh, where
+// none does, gets face 3 too and check_invariants reports it).
+GDEL_HD constexpr int face_naming(const tid_t n[4], tid_t t) {
+  int j = 3;
+  for (int k = 2; k >= 0; --k)
+    if (n[k] == t) j = k;
+  return j;
+}
+
 // Plain pointers for use inside kernels (trivially copyable).
 struct MeshView {
   TetRec* rec;
@@ -119,10 +129,7 @@ struct MeshView {
       get_opp_tets(u, n);
     }
 #endif
-    int j = 3;
-    for (int k = 2; k >= 0; --k)
-      if (n[k] == t) j = k;
-    return j;
+    return mesh::face_naming(n, t);
   }
 
   // A tet's four entries as stored, as one access (16 bytes, 16-byte aligned).
@@ -166,6 +173,8 @@ struct MeshView {
   GDEL_HD std::uint8_t face_flags(tid_t t, int i) const {
     return nb_internal(nraw[4 * std::int64_t(t) + i]) ? std::uint8_t(kInternal) : std::uint8_t(0);
   }
+  // Sets or clears face i's kInternal flag. A face with no neighbour (kNoTet) holds no
+  // flag: setting one there is a no-op, and face_flags reads 0.
   GDEL_HD void set_face_flags(tid_t t, int i, std::uint8_t f) const {
     tid_t& e = nraw[4 * std::int64_t(t) + i];
     e = nb_entry(nb_tet(e), e != kNoTet && (f & kInternal));
@@ -453,9 +462,11 @@ class TetMesh {
     for (std::size_t k = 0; k < o.size(); ++k) {
       const tid_t t = nb_tet(r[k >> 2].n[k & 3]);
       int j = 3;
-      if (t >= 0 && static_cast<std::size_t>(t) < r.size())
-        for (int l = 2; l >= 0; --l)
-          if (nb_tet(r[static_cast<std::size_t>(t)].n[l]) == static_cast<tid_t>(k >> 2)) j = l;
+      if (t >= 0 && static_cast<std::size_t>(t) < r.size()) {
+        tid_t n[4];
+        for (int l = 0; l < 4; ++l) n[l] = nb_tet(r[static_cast<std::size_t>(t)].n[l]);
+        j = face_naming(n, static_cast<tid_t>(k >> 2));
+      }
       o[k] = t < 0 ? fid_t(-1) : pack_facet(t, j);
     }
     return o;
