@@ -1847,6 +1847,72 @@ PY
       bench s61d_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
+  # (s62a's GDEL_LAZY_APEX and s62b's GDEL_FAST_MIN_BLOCKS exist only in those calls'
+  # binaries, not in the code as committed: bench/RESULTS.md, session 62)
+  s62a)  # session 62: the apexes across internal faces loaded only for a face that is not locally Delaunay (lazy, the default now) against HEAD 4874eaa's device code (old: session 61's final binary) and GDEL_LAZY_APEX=0 (eager): uniform 10^7 x3, 10^6 x2, profiles, a flip trace, every GPU test
+    bench_eager() {
+      GDEL_LAZY_APEX=0 bench "$@"
+    }
+    old_new s62a 3 2 bench_eager
+    GDEL_PROFILE=1 bench s62a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_LAZY_APEX=0 bench s62a_e7p_eager 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_FLIP_TRACE=2 bench s62a_e7t 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    for b in gdel-bench gdel-bench-old; do  # flip_iteration's kernels: registers and stack
+      cuobjdump -res-usage "$bin/$b" 2>&1 | python3 -c '
+import re, subprocess, sys
+items = re.findall(r"Function ([^\s:]+):\s*\n\s*REG:(\d+) STACK:(\d+)", sys.stdin.read())
+names = subprocess.run(["c++filt"], input="\n".join(i[0] for i in items), capture_output=True, text=True).stdout.split("\n")
+for (_, r, s), n in zip(items, names):
+    if "flip_iteration" in n:
+        print(f"   {sys.argv[1]}: regs {r:>3} stack {s:>5}  {n[:60]} ... {n[-60:]}")
+' "$b" | tee -a "$out/summary.txt"
+    done
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    ;;
+  s62b)  # session 62: a tet's record loaded beside its state in the proposals, a neighbour's record beside its stamp in the adjacency pass (new), against s62a's binary with GDEL_LAZY_APEX=0 (prev: HEAD's device code and the clean-ups) and HEAD 4874eaa's device code (old); the fast passes (par::fast_then_exact) compiled for 4 or 5 resident blocks an SM (GDEL_FAST_MIN_BLOCKS: mb4, mb5): uniform 10^7 x3, 10^6 x1, profiles, the fast kernels' registers, every GPU test (default)
+    bench_prev() {
+      local gb="$bin/gdel-bench-prev"
+      GDEL_LAZY_APEX=0 bench "$@"
+    }
+    bench_mb4() {
+      GDEL_FAST_MIN_BLOCKS=4 bench "$@"
+    }
+    bench_mb5() {
+      GDEL_FAST_MIN_BLOCKS=5 bench "$@"
+    }
+    old_new s62b 3 1 bench_prev bench_mb4 bench_mb5
+    GDEL_PROFILE=1 bench_prev s62b_e7p_prev 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_FAST_MIN_BLOCKS=4 bench s62b_e6_mb4 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    GDEL_FAST_MIN_BLOCKS=5 bench s62b_e6_mb5 60 --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+    for v in 0 4 5; do
+      GDEL_PROFILE=1 GDEL_FAST_MIN_BLOCKS=$v bench "s62b_e7p_mb$v" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    done
+    cuobjdump -res-usage "$bin/gdel-bench" 2>&1 | python3 -c '
+import re, subprocess, sys
+items = re.findall(r"Function ([^\s:]+):\s*\n\s*REG:(\d+) STACK:(\d+)", sys.stdin.read())
+names = subprocess.run(["c++filt"], input="\n".join(i[0] for i in items), capture_output=True, text=True).stdout.split("\n")
+for (_, r, s), n in zip(items, names):
+    if "fast_then_exact_impl" in n and ("GFlip3D" in n or "flip_iteration" in n or "commit_flips" in n):
+        kind = re.match(r"void gdel::par::detail::(\w+)(<\d+)?", n)
+        label = kind.group(1) + (kind.group(2) or "") if kind else n[:40]
+        print(f"   regs {r:>3} stack {s:>5}  {label}  ... {n[-90:]}")
+' | tee -a "$out/summary.txt"
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    ;;
+  s62c)  # session 62: the final binaries (HEAD 4874eaa's device code with the clean-ups) against session 61's (old): every GPU test, uniform 10^7 x2, 10^6 x1; then ncu's speed-of-light, warp-state, memory and occupancy sections over three late large launches at 10^7 of the proposals' fast pass and of the flips' (records + tets) fast pass
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    old_new s62c 2 1
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    for k in flip_iteration commit_flips; do
+      step "s62c_ncu_$k" 150 "$ncu" --clock-control none --kernel-name-base mangled \
+        -k "regex:for_kernel.*fast_then_exact_impl.*$k" --launch-skip 150 --launch-count 3 \
+        --section SpeedOfLight --section WarpStateStats --section MemoryWorkloadAnalysis --section Occupancy \
+        "$bin/gdel-bench" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
