@@ -1913,6 +1913,12 @@ for (_, r, s), n in zip(items, names):
         "$bin/gdel-bench" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     done
     ;;
+  s62d)  # session 62: the final binaries on an H200 against session 61's (old): uniform 10^7 x3, 10^6 x1, uniform 2*10^8 where the card holds it
+    old_new s62d 3 1
+    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+      bench s62d_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    fi
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
