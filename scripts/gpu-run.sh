@@ -1919,6 +1919,27 @@ for (_, r, s), n in zip(items, names):
       bench s62d_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
+  s63a)  # session 63: the proposals' face loop over the faces to test (not the four with the others skipped) and a state byte only for a flip's new slot (new), against session 62's final binary (old): uniform 10^7 x3, 10^6 x2, profiles of both, every GPU test; on an H200 also uniform 2*10^8
+    old_new s63a 3 2
+    GDEL_PROFILE=1 bench s63a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench_old s63a_e7p_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    # the proposals' fast pass (launch 151 at 10^7) under ncu: its instruction mix, and its
+    # SASS with each instruction's executions (CSV, for counting where the issues go)
+    ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+    for b in gdel-bench gdel-bench-old; do
+      step "s63a_ncu_$b" 120 "$ncu" --clock-control none --kernel-name-base mangled \
+        -k "regex:for_kernel.*fast_then_exact_impl.*flip_iteration" --launch-skip 150 --launch-count 1 \
+        --section SpeedOfLight --section InstructionStats --section SourceCounters --section WarpStateStats \
+        -o "$out/prop-$b" "$bin/$b" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+      step "s63a_sass_$b" 60 bash -c "'$ncu' -i '$out/prop-$b.ncu-rep' --page source --print-source sass --csv > '$out/prop-sass-$b.csv'"
+      step "s63a_details_$b" 60 "$ncu" -i "$out/prop-$b.ncu-rep" --page details
+    done
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+      bench s63a_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    fi
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

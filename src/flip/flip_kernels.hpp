@@ -7,6 +7,7 @@
 #include <climits>
 #include <cstdint>
 
+#include "core/bits.hpp"
 #include "flip/geo.hpp"
 #include "mesh/tet_mesh.hpp"
 
@@ -157,6 +158,12 @@ GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, W
 // (All four apexes are loaded first, internal faces' too: loading those only for a tet
 // with a face that is not locally Delaunay, which most active tets lack, made the large
 // iterations' proposals slower, 104 -> 112 ms at 10^7, bench/RESULTS.md, session 62.)
+// The loop runs over the faces to test, not over the four faces with the others
+// skipped: a warp's lanes then run one insphere test each a step until the lane with
+// the most faces is done (an active tet has 2.18 faces to test on average; at 10^6 a
+// warp's tets took 3.37 steps by face index and take 2.81 so). The proposals' pass runs
+// 7 % fewer instructions so, but not faster: it waits on its chain of dependent loads
+// (bench/RESULTS.md, session 63).
 template <bool Exact, class Work, class F>
 GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, Work work, F f) {
   if (!m.alive(b)) return -1;
@@ -166,10 +173,14 @@ GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, 
   std::uint8_t fl[4];
   m.get_adj(b, nt, fl);
   vid_t apex[4];
-  for (int i = 0; i < 4; ++i) apex[i] = apex_in(m, nt[i], bv, i);
+  unsigned todo = 0;  // the faces to test
   for (int i = 0; i < 4; ++i) {
+    apex[i] = apex_in(m, nt[i], bv, i);
+    if (nt[i] >= 0 && !(fl[i] & mesh::kInternal)) todo |= 1u << i;
+  }
+  for (; todo != 0; todo &= todo - 1) {
+    const int i = lowest_bit(todo);
     const vid_t ai = pick4(apex, i);
-    if (ai == kNoVertex || (pick4(fl, i) & mesh::kInternal)) continue;
     int s = g.insphere<Exact>(bv, ai, work);
     if (s == par::kUndecided) return kUndecidedResult;
     if (s <= 0) continue;  // locally Delaunay
@@ -203,8 +214,9 @@ template <class Work>
 GDEL_HD std::int8_t face_proposal(const Geo& g, const MeshView& m, tid_t b, int i, Work work) {
   if (!m.alive(b)) return -1;
   const Tet bt = m.tet[b];
-  if (m.face_flags(b, i) & mesh::kInternal) return -1;
-  const vid_t x = apex_across(m, b, bt.v, i);
+  const tid_t e = m.nraw[4 * std::int64_t(b) + i];  // (face i's neighbour and flag: one load)
+  if (mesh::nb_flags(e) & mesh::kInternal) return -1;
+  const vid_t x = apex_in(m, mesh::nb_tet(e), bt.v, i);
   if (x == kNoVertex) return -1;
   const int s = g.insphere<true>(bt.v, x, work);
   if (s == par::kUndecided) return kUndecidedResult;
@@ -561,7 +573,9 @@ GDEL_HD inline void write_flip(const MeshView& m, const FlipRec& r, const tid_t 
     Tet t;
     flip_new_tet<Type>(r, a, t.v);
     m.put_tet(out[a], t, nt);
-    m.state[out[a]] = mesh::kAlive | mesh::kChanged;
+    // out[0] and out[1] are old tets' slots, alive already (a state byte is a random
+    // store of its own: one a new tet, not three)
+    if (a == 2) m.state[out[a]] = mesh::kAlive;
   }
 }
 

@@ -842,7 +842,7 @@ class GFlip3D {
         const std::int32_t ns = split_of[nt];
         nb[3] = ns >= 0 ? ch[4 * std::int64_t(ns) + nf] : nt;
         m.put_tet(c, x, nb);
-        m.state[c] = mesh::kAlive | mesh::kChanged;
+        if (i > 0) m.state[c] = mesh::kAlive;  // (child 0 is the split tet's slot: alive already)
         if (ns < 0) m.nraw[4 * std::int64_t(nt) + nf] = c;  // the neighbour links back (its flag there cleared)
       }
     });

@@ -16,7 +16,7 @@
 //             that a relink rewrites, is cleared by it without a write of its own
 //             (bench/RESULTS.md, session 61: a byte a face was one more random sector a
 //             tet read and written in every flip)
-//   state[t]  TetState bits (alive, changed, ...)
+//   state[t]  TetState bits (alive, queued)
 //
 // Slots: a tet slot is alive or free. Free slots sit on a stack. Allocation and
 // release are deterministic (so the same input gives the same slots, hence the same
@@ -69,15 +69,15 @@ GDEL_HD constexpr bool nb_internal(tid_t e) { return e < kNoTet; }
 
 enum TetState : std::uint8_t {
   kAlive = 1,
-  kChanged = 2,   // created or modified since last checked: its faces need checking
-  kEmpty = 4,     // holds no uninserted point (gFlip3D)
-  kQueued = 8,    // in the next active set being gathered (GFlip3D::commit_flips clears it)
+  kQueued = 2,  // in the next active set being gathered (GFlip3D::commit_flips clears it)
 };
 
 // A face's flag (MeshView::face_flags): the sign bit of its neighbour entry.
 enum FaceFlag : std::uint8_t {
   kInternal = 1,  // created inside a split/flip: known locally Delaunay
 };
+// The face flags (kInternal or 0) an entry as stored holds.
+GDEL_HD constexpr std::uint8_t nb_flags(tid_t e) { return nb_internal(e) ? std::uint8_t(kInternal) : std::uint8_t(0); }
 
 // The face of a tet with neighbour tets n (decoded entries) whose neighbour is t: the
 // first of faces 0-2 that names t, else 3 (MeshView::nb_face; an inconsistent mesh, where
@@ -150,7 +150,7 @@ struct MeshView {
   GDEL_HD void get_adj(tid_t t, tid_t nt[4], std::uint8_t fl[4]) const {
     get_entries(t, nt);
     for (int i = 0; i < 4; ++i) {
-      fl[i] = nb_internal(nt[i]) ? std::uint8_t(kInternal) : std::uint8_t(0);
+      fl[i] = nb_flags(nt[i]);
       nt[i] = nb_tet(nt[i]);
     }
   }
@@ -170,9 +170,7 @@ struct MeshView {
   }
 
   GDEL_HD bool alive(tid_t t) const { return (state[t] & kAlive) != 0; }
-  GDEL_HD std::uint8_t face_flags(tid_t t, int i) const {
-    return nb_internal(nraw[4 * std::int64_t(t) + i]) ? std::uint8_t(kInternal) : std::uint8_t(0);
-  }
+  GDEL_HD std::uint8_t face_flags(tid_t t, int i) const { return nb_flags(nraw[4 * std::int64_t(t) + i]); }
   // Sets or clears face i's kInternal flag. A face with no neighbour (kNoTet) holds no
   // flag: setting one there is a no-op, and face_flags reads 0.
   GDEL_HD void set_face_flags(tid_t t, int i, std::uint8_t f) const {
@@ -436,14 +434,13 @@ class TetMesh {
   // apply_remap's step for the state bytes: moved through a scratch copied back, or
   // (shrink) into a new array of `alive` slots.
   void remap_states(std::int64_t alive, bool shrink, const tid_t* rm, const tid_t* from) {
-    par::Buffer<std::uint8_t, B>& buf = state_;
     par::Buffer<std::uint8_t, B> nb(*ctx_, static_cast<std::size_t>(std::max<std::int64_t>(alive, 1)));
     std::uint8_t* dst = nb.data();
-    remap_into(buf.data(), dst, 1, alive, rm, from, [] GDEL_LAMBDA(std::uint8_t v) { return v; });
+    remap_into(state_.data(), dst, 1, alive, rm, from, [] GDEL_LAMBDA(std::uint8_t v) { return v; });
     if (shrink)
-      buf = std::move(nb);
+      state_ = std::move(nb);
     else
-      par::detail::Memory<B>::copy(*ctx_, buf.data(), dst, static_cast<std::size_t>(alive));
+      par::detail::Memory<B>::copy(*ctx_, state_.data(), dst, static_cast<std::size_t>(alive));
   }
 
   // The records (vertices and neighbour tets of each slot).

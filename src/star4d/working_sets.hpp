@@ -59,6 +59,7 @@
 #include <chrono>
 #include <cstdint>
 
+#include "core/bits.hpp"
 #include "mesh/conventions.hpp"
 #include "parallel/primitives.hpp"
 #include "star4d/pba.hpp"
@@ -99,16 +100,6 @@ GDEL_HD GDEL_FORCEINLINE U64 pack(std::int32_t a, std::int32_t b) {
 }
 GDEL_HD GDEL_FORCEINLINE std::int32_t key_hi(U64 k) { return static_cast<std::int32_t>(k >> 32); }
 GDEL_HD GDEL_FORCEINLINE std::int32_t key_lo(U64 k) { return static_cast<std::int32_t>(k & 0xffffffffu); }
-
-// Index of the lowest set bit of m ≠ 0. (Not std::countr_zero: nvcc compiles it to a
-// constant in device code.)
-GDEL_HD GDEL_FORCEINLINE int lowest_bit(std::uint64_t m) {
-#if GDEL_DEVICE_PASS
-  return __ffsll(static_cast<long long>(m)) - 1;
-#else
-  return __builtin_ctzll(m);
-#endif
-}
 
 // Distinct undirected site pairs (lo<<32 | hi) of the 4-coloured Kuhn tets of a cube
 // whose corner (dx,dy,dz) has colour c[dx + 2dy + 4dz], into local; returns their number.
