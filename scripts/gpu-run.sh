@@ -155,6 +155,30 @@ old_new() {
   done
 }
 
+# Runner A then runner B (bench, bench_old or a bench_NAME wrapper) on uniform 10^7
+# (medians of 3) R7 times and on uniform, grid and sphere 10^6 (medians of 5) R6 times;
+# the steps are TAG_e7_NAME<r> and TAG_e6_NAME<r>, NAME "new" for bench, "old" for
+# bench_old, else the wrapper's name without "bench_": ab TAG R7 R6 A B
+ab() {
+  local tag=$1 r7=$2 r6=$3 a=$4 b=$5
+  ab_round() {  # ab_round SIZE_TAG ROUND ARGS... (tag, a, b: ab's)
+    local sz=$1 r=$2 x nm
+    shift 2
+    for x in "$a" "$b"; do
+      nm=${x#bench_}
+      [ "$x" = bench ] && nm=new
+      [ "$x" = bench_old ] && nm=old
+      "$x" "${tag}_${sz}_$nm$r" 60 "$@"
+    done
+  }
+  for r in $(seq "$r7"); do
+    ab_round e7 "$r" --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+  done
+  for r in $(seq "$r6"); do
+    ab_round e6 "$r" --dist uniform,grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 5
+  done
+}
+
 # uniform, grid and sphere 10^6 (medians of 5) under each GDEL_SPLIT_EXACT value given,
 # ROUNDS times (session 49): split_rounds TAG VALUES...
 split_rounds() {
@@ -1938,6 +1962,31 @@ for (_, r, s), n in zip(items, names):
     step gpu_predicates 60 "$tbin/gpu_predicates"
     if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
       bench s63a_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    fi
+    ;;
+  s63b)  # session 63 (GDEL_ACTIVE_VERTEX exists only in this call's binary: a pair sort, ties in candidate order; the final knob is GDEL_ACTIVE_SPACE): a large iteration's next active set sorted by its tets' smallest vertex (GDEL_ACTIVE_VERTEX=1, vtx) against the default slot order, one binary: uniform 10^7 x3, 10^6 x2, profiles of both, gpu_gflip3d under the knob; on an H200 also uniform 2*10^8 (default)
+    bench_vtx() {
+      GDEL_ACTIVE_VERTEX=1 bench "$@"
+    }
+    ab s63b 3 2 bench bench_vtx
+    GDEL_PROFILE=1 bench s63b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench_vtx s63b_e7p_vtx 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_ACTIVE_VERTEX=1 step gpu_gflip3d_vtx 200 "$tbin/gpu_gflip3d"
+    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+      bench s63b_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    fi
+    ;;
+  s63c)  # session 63's plan for the next session (its device time ran out before it ran): the next active set in space order past 2^23 slots (GDEL_ACTIVE_SPACE=auto, the intended default) against slot order (the default), one binary: uniform 10^7 x3, 10^6 x1, a profile and uniform 10^8 under auto, every GPU test (gpu_gflip3d's path test runs in both orders); on an H200 also uniform 2*10^8 under auto
+    bench_auto() {
+      GDEL_ACTIVE_SPACE=auto bench "$@"
+    }
+    ab s63c 3 1 bench bench_auto
+    GDEL_PROFILE=1 bench_auto s63c_e7p_auto 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    bench_auto s63c_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+      bench_auto s63c_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
   cmd)

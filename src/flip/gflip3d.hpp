@@ -1375,10 +1375,22 @@ class GFlip3D {
     const bool list_in_team = team && !active_by_slots_;
     const bool list_large = B::is_device && !team && !active_by_slots_ && active_listed_large_ &&
                             abound * kListedActiveRatio < mesh_.size();
+    // the next active set in space order (space_order): by the smallest finite vertex of
+    // each tet (the points are in curve order), ties by tet id; else in slot order
+    const bool by_space = space_order();
+    const vid_t inf = static_cast<vid_t>(n_);
+    auto space_key = [=] GDEL_LAMBDA(tid_t t) -> std::uint64_t {
+      const mesh::Tet x = m.tet[t];
+      vid_t lo = inf;
+      for (int i = 0; i < 4; ++i) lo = (x.v[i] != inf && x.v[i] < lo) ? x.v[i] : lo;
+      return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) | static_cast<std::uint32_t>(t);
+    };
     Buffer<tid_t, B> act(ctx_);
     if (team) {
       Buffer<tid_t, B> listed(ctx_, list_in_team ? static_cast<std::size_t>(abound) : 0);
       tid_t* lp = listed.data();
+      Buffer<std::uint64_t, B> skeys(ctx_, list_in_team && by_space ? static_cast<std::size_t>(2 * abound) : 0);
+      std::uint64_t* skp = skeys.data();
       if (list_in_team) act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
       double* work = team_work(g);
@@ -1403,7 +1415,14 @@ class GFlip3D {
         const std::int64_t k = par::team_select(tm, abound, lp, [=](std::int64_t c) { return candidate(c) >= 0; });
         for (std::int64_t j = tm.rank(); j < k; j += tm.size()) lp[j] = candidate(lp[j]);
         tm.sync();
-        par::team_sort_distinct(tm, lp, k, acp);
+        if (by_space) {
+          for (std::int64_t j = tm.rank(); j < k; j += tm.size()) skp[j] = space_key(lp[j]);
+          tm.sync();
+          par::team_sort_distinct(tm, skp, k, skp + abound);
+          for (std::int64_t j = tm.rank(); j < k; j += tm.size()) acp[j] = static_cast<tid_t>(skp[abound + j] & 0xffffffffu);
+        } else {
+          par::team_sort_distinct(tm, lp, k, acp);
+        }
         if (tm.rank() == 0) cn[4] = k;
       });
       par::mark(ctx_, "flip: records + tets + adjacency (team)");
@@ -1433,8 +1452,9 @@ class GFlip3D {
       par::select_indices_to(ctx_, static_cast<std::size_t>(abound), acp, cn + 4,
                              [=] GDEL_LAMBDA(tid_t c) { return candidate(c) >= 0; });
       par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = j < *cnt ? candidate(acp[j]) : past; });
-      par::sort_keys(ctx_, acp, static_cast<std::size_t>(abound),
-                     std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(past)))));
+      if (!by_space)
+        par::sort_keys(ctx_, acp, static_cast<std::size_t>(abound),
+                       std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(past)))));
     } else if (!list_in_team) {  // the marked slots, in slot order
       act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
@@ -1443,6 +1463,16 @@ class GFlip3D {
       par::parallel_for_counted(ctx_, abound, cn + 4, [=] GDEL_LAMBDA(std::int64_t j) {
         m.state[acp[j]] &= static_cast<std::uint8_t>(~mesh::kQueued);
       });
+    }
+    if (by_space && !(team && list_in_team)) {  // the listed or gathered set, by space_key
+      const std::int64_t* cnt = cn + 4;
+      const tid_t past = static_cast<tid_t>(mesh_.size());
+      Buffer<std::uint64_t, B> key(ctx_, static_cast<std::size_t>(abound));
+      std::uint64_t* kp = key.data();
+      tid_t* acp = act.data();
+      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { kp[j] = j < *cnt ? space_key(acp[j]) : ~std::uint64_t(0); });
+      par::sort_keys(ctx_, kp, static_cast<std::size_t>(abound), 32 + static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_))));
+      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = j < *cnt ? static_cast<tid_t>(kp[j] & 0xffffffffu) : past; });
     }
     if (defer) {
       active_deferred_ = true;
@@ -1825,6 +1855,29 @@ class GFlip3D {
   // three pairs and no slower at 10^6 (bench/RESULTS.md, session 58).
   bool reorder_gather_ = !par::knob_off("GDEL_REORDER_GATHER");
   bool active_by_slots_ = par::knob_on("GDEL_ACTIVE_SLOTS");
+  // Whether commit_flips puts the next active set in space order, not slot order. Slots
+  // are in space order only just after a tet sort; within a round new tets take freed or
+  // fresh slots, so a warp's active tets lie apart, and share few neighbours and points.
+  // In space order (a study form: a pair sort, ties in candidate order) the proposals,
+  // the flips and their adjacency ran 36, 10 and 27 ms faster at 10^7 for 33 ms more in
+  // the set's sort, −57 ms a run; at 10^6 the sort cost more than it saved (bench/
+  // RESULTS.md, session 63). GDEL_ACTIVE_SPACE: "1" always; "auto" on a mesh of at least
+  // kSpaceOrderMinSlots slots (≈ 1.2 * 10^6 points) and not with independent splits,
+  // whose studies were measured in slot order (forced on, its test's thin shells, 3 x
+  // 20 000 points, left 126 facets stuck against 75 on the CPU backend); else (the
+  // default, until this form has run on a GPU: session 63's device time ran out) never.
+  enum class SpaceOrder { kOff, kOn, kAuto };
+  static SpaceOrder space_order_setting() {
+    const char* e = std::getenv("GDEL_ACTIVE_SPACE");
+    const std::string v = e ? e : "";
+    return v == "1" ? SpaceOrder::kOn : v == "auto" ? SpaceOrder::kAuto : SpaceOrder::kOff;
+  }
+  SpaceOrder space_order_ = space_order_setting();
+  static constexpr std::int64_t kSpaceOrderMinSlots = std::int64_t(1) << 23;
+  bool space_order() const {
+    if (space_order_ != SpaceOrder::kAuto) return space_order_ == SpaceOrder::kOn;
+    return !cfg_.independent_splits && mesh_.size() >= kSpaceOrderMinSlots;
+  }
   // insertion in SoS order (decide_sos_order): tets proposed so far, ties being counted
   // (counts_[5]), switched
   std::int64_t proposed_ = 0;

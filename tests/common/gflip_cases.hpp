@@ -281,7 +281,9 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
 // (GDEL_ACTIVE_SLOTS=1 and the large sets): the same list, or the paths' flips part. On
 // integer input (the grid, the sphere) a large iteration's exact proposals run a face per
 // thread (split) or, GDEL_SPLIT_EXACT=0, a tet per thread: no teams with each. Sphere
-// points: every insphere test an exact tie.
+// points: every insphere test an exact tie. All of it twice: in slot order (the default)
+// and with the next active sets in space order (GDEL_ACTIVE_SPACE=1), whose keys break
+// ties by tet id on every path.
 inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
   struct Path {
     const char* team_max;
@@ -296,7 +298,7 @@ inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
                         {"100000000", "spread", "1"},
                         {"1024", "auto", "1", "1"},
                         {"0", "auto", "1", "1"}};
-  auto check = [&](const std::vector<double>& pts, const Options& o) {
+  auto check_order = [&](const std::vector<double>& pts, const Options& o) {
     const Triangulation base = delaunay(pts, o);
     expect_flip_output_valid(pts, base, b);
     for (const Path& p : paths) {
@@ -317,6 +319,16 @@ inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
       EXPECT_EQ(t.tets, base.tets);
       EXPECT_EQ(t.neighbors, base.neighbors);
     }
+  };
+  auto check = [&](const std::vector<double>& pts, const Options& o) {
+    {
+      SCOPED_TRACE("slot order");
+      check_order(pts, o);
+    }
+    SCOPED_TRACE("space order (GDEL_ACTIVE_SPACE=1)");
+    ::setenv("GDEL_ACTIVE_SPACE", "1", 1);
+    check_order(pts, o);
+    ::unsetenv("GDEL_ACTIVE_SPACE");
   };
   for_flip_study_inputs(b, n, 11, check);
   SCOPED_TRACE("sphere");
