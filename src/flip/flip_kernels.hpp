@@ -92,6 +92,14 @@ GDEL_HD inline bool split_defers(const MeshView& m, const std::uint64_t* best, t
 // Flip proposals. Encoding: -1 none; (1 << 4 | i << 2) 2-3 flip on face i;
 // (2 << 4 | i << 2 | k) 3-2 flip of the edge shared by faces i and k.
 // ---------------------------------------------------------------------------
+// The smallest finite vertex of tet t (∞'s id: inf): the points are in curve order, so
+// tets sorted by it lie in space order (GFlip3D's tet sort and its active sets).
+GDEL_HD inline vid_t smallest_finite_vertex(const Tet& t, vid_t inf) {
+  vid_t lo = inf;
+  for (int i = 0; i < 4; ++i) lo = (t.v[i] != inf && t.v[i] < lo) ? t.v[i] : lo;
+  return lo;
+}
+
 GDEL_HD inline int prop_type(int p) { return p >> 4; }
 GDEL_HD inline int prop_face(int p) { return (p >> 2) & 3; }
 GDEL_HD inline int prop_other(int p) { return p & 3; }

@@ -1030,8 +1030,7 @@ class GFlip3D {
   // (Geo::int_all: lattice points, the sphere), in the team otherwise.
   enum class ProposeAt { kTeam, kSpread, kAuto };
   static ProposeAt propose_at_setting() {
-    const char* e = std::getenv("GDEL_TEAM_PROPOSE");
-    const std::string v = e ? e : "";
+    const std::string v = par::knob_value("GDEL_TEAM_PROPOSE");
     return v == "team" ? ProposeAt::kTeam : v == "spread" ? ProposeAt::kSpread : ProposeAt::kAuto;
   }
   bool spread_propose(const Geo& g) const {
@@ -1380,9 +1379,7 @@ class GFlip3D {
     const bool by_space = space_order();
     const vid_t inf = static_cast<vid_t>(n_);
     auto space_key = [=] GDEL_LAMBDA(tid_t t) -> std::uint64_t {
-      const mesh::Tet x = m.tet[t];
-      vid_t lo = inf;
-      for (int i = 0; i < 4; ++i) lo = (x.v[i] != inf && x.v[i] < lo) ? x.v[i] : lo;
+      const vid_t lo = smallest_finite_vertex(m.tet[t], inf);
       return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) | static_cast<std::uint32_t>(t);
     };
     Buffer<tid_t, B> act(ctx_);
@@ -1413,11 +1410,12 @@ class GFlip3D {
         }
         // (the candidates read the flips' stamps and records, written before the sync above)
         const std::int64_t k = par::team_select(tm, abound, lp, [=](std::int64_t c) { return candidate(c) >= 0; });
-        for (std::int64_t j = tm.rank(); j < k; j += tm.size()) lp[j] = candidate(lp[j]);
+        for (std::int64_t j = tm.rank(); j < k; j += tm.size()) {
+          lp[j] = candidate(lp[j]);
+          if (by_space) skp[j] = space_key(lp[j]);
+        }
         tm.sync();
         if (by_space) {
-          for (std::int64_t j = tm.rank(); j < k; j += tm.size()) skp[j] = space_key(lp[j]);
-          tm.sync();
           par::team_sort_distinct(tm, skp, k, skp + abound);
           for (std::int64_t j = tm.rank(); j < k; j += tm.size()) acp[j] = static_cast<tid_t>(skp[abound + j] & 0xffffffffu);
         } else {
@@ -1713,13 +1711,8 @@ class GFlip3D {
                    mesh_.reorder_bytes() / 1048576.0, mem.peak() / 1048576.0);
     if (!fits) return false;
     const vid_t inf = static_cast<vid_t>(n_);
-    auto remap = mesh_.reorder(
-        [=] GDEL_LAMBDA(const mesh::Tet& t) {
-          vid_t m = inf;
-          for (int i = 0; i < 4; ++i) m = (t.v[i] != inf && t.v[i] < m) ? t.v[i] : m;
-          return m;
-        },
-        inf, shrink, gather, whole);
+    auto remap = mesh_.reorder([=] GDEL_LAMBDA(const mesh::Tet& t) { return smallest_finite_vertex(t, inf); }, inf,
+                               shrink, gather, whole);
     const tid_t* rm = remap.data();
     const vid_t* U = todo_.data();
     tid_t* vt = vert_tet_.data();
@@ -1844,8 +1837,7 @@ class GFlip3D {
   bool vote_in_propose_ = vote_in_propose_setting();
   enum class DagReset { kAuto, kSparse, kDense };
   static DagReset dag_reset_setting() {
-    const char* e = std::getenv("GDEL_DAG_RESET");
-    const std::string v = e ? e : "";
+    const std::string v = par::knob_value("GDEL_DAG_RESET");
     return v == "sparse" ? DagReset::kSparse : v == "dense" ? DagReset::kDense : DagReset::kAuto;
   }
   DagReset dag_reset_ = dag_reset_setting();
@@ -1868,8 +1860,7 @@ class GFlip3D {
   // default, until this form has run on a GPU: session 63's device time ran out) never.
   enum class SpaceOrder { kOff, kOn, kAuto };
   static SpaceOrder space_order_setting() {
-    const char* e = std::getenv("GDEL_ACTIVE_SPACE");
-    const std::string v = e ? e : "";
+    const std::string v = par::knob_value("GDEL_ACTIVE_SPACE");
     return v == "1" ? SpaceOrder::kOn : v == "auto" ? SpaceOrder::kAuto : SpaceOrder::kOff;
   }
   SpaceOrder space_order_ = space_order_setting();

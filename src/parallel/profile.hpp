@@ -33,16 +33,15 @@ struct ProfileEntry {
 using ProfileTotals = std::vector<ProfileEntry>;
 
 inline bool profiling_requested() { return std::getenv("GDEL_PROFILE") != nullptr; }
+// A measurement knob's value: the variable `name`, "" when unset.
+inline std::string knob_value(const char* name) {
+  const char* e = std::getenv(name);
+  return e ? e : "";
+}
 // A measurement knob that turns a default path off: the variable `name` set to "0".
-inline bool knob_off(const char* name) {
-  const char* e = std::getenv(name);
-  return e && std::string(e) == "0";
-}
+inline bool knob_off(const char* name) { return knob_value(name) == "0"; }
 // A measurement knob that turns a default-off path on: the variable `name` set to "1".
-inline bool knob_on(const char* name) {
-  const char* e = std::getenv(name);
-  return e && std::string(e) == "1";
-}
+inline bool knob_on(const char* name) { return knob_value(name) == "1"; }
 
 // Whether GDEL_PROFILE_SERIES (spec) asks for the intervals of step `name`.
 inline bool series_wanted(const char* spec, const std::string& name) {
