@@ -155,16 +155,18 @@ old_new() {
   done
 }
 
-# Runner A then runner B (bench, bench_old or a bench_NAME wrapper) on uniform 10^7
-# (medians of 3) R7 times and on uniform, grid and sphere 10^6 (medians of 5) R6 times;
-# the steps are TAG_e7_NAME<r> and TAG_e6_NAME<r>, NAME "new" for bench, "old" for
-# bench_old, else the wrapper's name without "bench_": ab TAG R7 R6 A B
+# Runner A then runner B (then C, ...: bench, bench_old or a bench_NAME wrapper) on
+# uniform 10^7 (medians of 3) R7 times and on uniform, grid and sphere 10^6 (medians of 5)
+# R6 times; the steps are TAG_e7_NAME<r> and TAG_e6_NAME<r>, NAME "new" for bench, "old"
+# for bench_old, else the wrapper's name without "bench_": ab TAG R7 R6 A B [C...]
 ab() {
-  local tag=$1 r7=$2 r6=$3 a=$4 b=$5
-  ab_round() {  # ab_round SIZE_TAG ROUND ARGS... (tag, a, b: ab's)
+  local tag=$1 r7=$2 r6=$3
+  shift 3
+  local runners=("$@")
+  ab_round() {  # ab_round SIZE_TAG ROUND ARGS... (tag, runners: ab's)
     local sz=$1 r=$2 x nm
     shift 2
-    for x in "$a" "$b"; do
+    for x in "${runners[@]}"; do
       nm=${x#bench_}
       [ "$x" = bench ] && nm=new
       [ "$x" = bench_old ] && nm=old
@@ -1987,6 +1989,28 @@ for (_, r, s), n in zip(items, names):
     step gpu_predicates 60 "$tbin/gpu_predicates"
     if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
       bench_auto s63c_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
+    fi
+    ;;
+  s64a)  # session 64: the space order's pair sort, now the default (auto), against slot order (GDEL_ACTIVE_SPACE=0, the same binary) and against session 63's 64-bit key sort under auto (gdel-bench-old: HEAD c481039's gdel-bench) and against keys of blocks of 256 points (GDEL_SPACE_SHIFT=8, two radix passes at 10^7) and the tet sort every second round (GDEL_REORDER_EVERY=2): uniform 10^7 x3, 10^6 x2, a profile and uniform 10^8 at the default, every GPU test; on an H200 also uniform 2*10^8
+    bench_off() {
+      GDEL_ACTIVE_SPACE=0 bench "$@"
+    }
+    bench_k64() {
+      GDEL_ACTIVE_SPACE=auto bench_old "$@"
+    }
+    bench_sh8() {
+      GDEL_SPACE_SHIFT=8 bench "$@"
+    }
+    bench_re2() {
+      GDEL_REORDER_EVERY=2 bench "$@"
+    }
+    ab s64a 3 2 bench bench_off bench_k64 bench_sh8 bench_re2
+    GDEL_PROFILE=1 bench s64a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s64a_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+      bench s64a_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
   cmd)

@@ -1375,12 +1375,19 @@ class GFlip3D {
     const bool list_large = B::is_device && !team && !active_by_slots_ && active_listed_large_ &&
                             abound * kListedActiveRatio < mesh_.size();
     // the next active set in space order (space_order): by the smallest finite vertex of
-    // each tet (the points are in curve order), ties by tet id; else in slot order
+    // each tet (the points are in curve order), ties by tet id; else in slot order. The
+    // team sorts distinct 64-bit keys (vertex, tet id); the other paths put the set in
+    // slot order first and then sort it stably by the vertex alone, a pair sort of
+    // bit_width(n) bits (3 radix passes at 10^7 where the 64-bit key took 7): the same order.
     const bool by_space = space_order();
     const vid_t inf = static_cast<vid_t>(n_);
+    const int vbits = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_)));
+    const int vshift = std::min(space_shift_, vbits - 1);  // GDEL_SPACE_SHIFT: coarser keys
+    auto space_vertex = [=] GDEL_LAMBDA(tid_t t) -> std::uint32_t {
+      return static_cast<std::uint32_t>(smallest_finite_vertex(m.tet[t], inf)) >> vshift;
+    };
     auto space_key = [=] GDEL_LAMBDA(tid_t t) -> std::uint64_t {
-      const vid_t lo = smallest_finite_vertex(m.tet[t], inf);
-      return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) | static_cast<std::uint32_t>(t);
+      return (static_cast<std::uint64_t>(space_vertex(t)) << 32) | static_cast<std::uint32_t>(t);
     };
     Buffer<tid_t, B> act(ctx_);
     if (team) {
@@ -1450,9 +1457,8 @@ class GFlip3D {
       par::select_indices_to(ctx_, static_cast<std::size_t>(abound), acp, cn + 4,
                              [=] GDEL_LAMBDA(tid_t c) { return candidate(c) >= 0; });
       par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = j < *cnt ? candidate(acp[j]) : past; });
-      if (!by_space)
-        par::sort_keys(ctx_, acp, static_cast<std::size_t>(abound),
-                       std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(past)))));
+      par::sort_keys(ctx_, acp, static_cast<std::size_t>(abound),
+                     std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(past)))));
     } else if (!list_in_team) {  // the marked slots, in slot order
       act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
@@ -1462,15 +1468,14 @@ class GFlip3D {
         m.state[acp[j]] &= static_cast<std::uint8_t>(~mesh::kQueued);
       });
     }
-    if (by_space && !(team && list_in_team)) {  // the listed or gathered set, by space_key
+    if (by_space && !(team && list_in_team)) {  // the set in slot order, stably by vertex
+      // (unused entries, past the count, get a key above every vertex and stay last)
       const std::int64_t* cnt = cn + 4;
-      const tid_t past = static_cast<tid_t>(mesh_.size());
-      Buffer<std::uint64_t, B> key(ctx_, static_cast<std::size_t>(abound));
-      std::uint64_t* kp = key.data();
+      Buffer<std::uint32_t, B> key(ctx_, static_cast<std::size_t>(abound));
+      std::uint32_t* kp = key.data();
       tid_t* acp = act.data();
-      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { kp[j] = j < *cnt ? space_key(acp[j]) : ~std::uint64_t(0); });
-      par::sort_keys(ctx_, kp, static_cast<std::size_t>(abound), 32 + static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_))));
-      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = j < *cnt ? static_cast<tid_t>(kp[j] & 0xffffffffu) : past; });
+      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { kp[j] = j < *cnt ? space_vertex(acp[j]) : ~std::uint32_t(0); });
+      par::sort_pairs(ctx_, kp, acp, static_cast<std::size_t>(abound), vbits - vshift);
     }
     if (defer) {
       active_deferred_ = true;
@@ -1850,20 +1855,27 @@ class GFlip3D {
   // Whether commit_flips puts the next active set in space order, not slot order. Slots
   // are in space order only just after a tet sort; within a round new tets take freed or
   // fresh slots, so a warp's active tets lie apart, and share few neighbours and points.
-  // In space order (a study form: a pair sort, ties in candidate order) the proposals,
-  // the flips and their adjacency ran 36, 10 and 27 ms faster at 10^7 for 33 ms more in
-  // the set's sort, −57 ms a run; at 10^6 the sort cost more than it saved (bench/
-  // RESULTS.md, session 63). GDEL_ACTIVE_SPACE: "1" always; "auto" on a mesh of at least
+  // In space order the proposals, the flips and their adjacency ran 31, 6 and 26 ms
+  // faster at 10^7 for 30 ms more in the set's step, −52 to −55 ms a run on the H100, and
+  // uniform 10^8 5.97 s where it took 7.33; at 10^6 a study's sort cost more than it
+  // saved (bench/RESULTS.md, sessions 63 and 64). GDEL_ACTIVE_SPACE:
+  // "1" always; "0" never; else ("auto", the default) on a mesh of at least
   // kSpaceOrderMinSlots slots (≈ 1.2 * 10^6 points) and not with independent splits,
   // whose studies were measured in slot order (forced on, its test's thin shells, 3 x
-  // 20 000 points, left 126 facets stuck against 75 on the CPU backend); else (the
-  // default, until this form has run on a GPU: session 63's device time ran out) never.
+  // 20 000 points, left 126 facets stuck against 75 on the CPU backend).
   enum class SpaceOrder { kOff, kOn, kAuto };
   static SpaceOrder space_order_setting() {
     const std::string v = par::knob_value("GDEL_ACTIVE_SPACE");
-    return v == "1" ? SpaceOrder::kOn : v == "auto" ? SpaceOrder::kAuto : SpaceOrder::kOff;
+    return v == "1" ? SpaceOrder::kOn : v == "0" ? SpaceOrder::kOff : SpaceOrder::kAuto;
   }
   SpaceOrder space_order_ = space_order_setting();
+  // GDEL_SPACE_SHIFT=k (a measurement knob, default 0): the space order's key is the
+  // vertex shifted right by k bits (blocks of 2^k points in curve order, ties by tet id):
+  // fewer radix passes, coarser locality.
+  int space_shift_ = [] {
+    const char* e = std::getenv("GDEL_SPACE_SHIFT");
+    return e ? std::clamp(std::atoi(e), 0, 31) : 0;
+  }();
   static constexpr std::int64_t kSpaceOrderMinSlots = std::int64_t(1) << 23;
   bool space_order() const {
     if (space_order_ != SpaceOrder::kAuto) return space_order_ == SpaceOrder::kOn;

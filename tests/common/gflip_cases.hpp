@@ -281,9 +281,9 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
 // (GDEL_ACTIVE_SLOTS=1 and the large sets): the same list, or the paths' flips part. On
 // integer input (the grid, the sphere) a large iteration's exact proposals run a face per
 // thread (split) or, GDEL_SPLIT_EXACT=0, a tet per thread: no teams with each. Sphere
-// points: every insphere test an exact tie. All of it twice: in slot order (the default)
-// and with the next active sets in space order (GDEL_ACTIVE_SPACE=1), whose keys break
-// ties by tet id on every path.
+// points: every insphere test an exact tie. All of it twice: in slot order (what the
+// default, GDEL_ACTIVE_SPACE=auto, gives on meshes this small) and with the next active
+// sets in space order (GDEL_ACTIVE_SPACE=1), whose ties go by tet id on every path.
 inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
   struct Path {
     const char* team_max;
