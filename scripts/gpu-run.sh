@@ -131,7 +131,7 @@ alternate() {
 
 # The GPU test binaries present in the binaries' folder, a step each: gpu_tests
 gpu_tests() {
-  for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh; do
+  for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_parallel; do
     if [ -x "$tbin/$t" ]; then step "$t" 200 "$tbin/$t"; fi
   done
 }
@@ -2012,6 +2012,13 @@ for (_, r, s), n in zip(items, names):
     if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
       bench s64a_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
+    ;;
+  s64b)  # session 64: the radix pair sorts of the next active set and of the tet sort hand over their alternate arrays instead of copying back (gdel-bench) against 4cf438d (gdel-bench-old): uniform 10^7 x3, 10^6 x2, a profile, uniform 10^8, every GPU test
+    ab s64b 3 2 bench bench_old
+    GDEL_PROFILE=1 bench s64b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s64b_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests
+    step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

@@ -1475,7 +1475,7 @@ class GFlip3D {
       std::uint32_t* kp = key.data();
       tid_t* acp = act.data();
       par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { kp[j] = j < *cnt ? space_vertex(acp[j]) : ~std::uint32_t(0); });
-      par::sort_pairs(ctx_, kp, acp, static_cast<std::size_t>(abound), vbits - vshift);
+      par::sort_pairs(ctx_, key, act, static_cast<std::size_t>(abound), vbits - vshift);
     }
     if (defer) {
       active_deferred_ = true;

@@ -339,7 +339,9 @@ class TetMesh {
         ip[t] = static_cast<tid_t>(t);
       });
       const int bits = std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(dead_key))));
-      par::sort_pairs(*ctx_, kp, ip, static_cast<std::size_t>(n), bits);
+      par::sort_pairs(*ctx_, k, ids, static_cast<std::size_t>(n), bits);
+      kp = k.data();  // (the sort may have moved them)
+      ip = ids.data();
       alive = par::count_indices(*ctx_, static_cast<std::size_t>(n),
                                  [=] GDEL_LAMBDA(std::int64_t j) { return kp[j] != dead_key; });
       // the dead sort last: sorted position j < alive is the new slot (no reads of kp here)

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include <thrust/copy.h>
 #include <thrust/count.h>
@@ -153,6 +154,13 @@ void sort_pairs(Context<Cpu>&, K* keys, V* values, std::size_t n, int /*end_bit*
   } else {
     with_policy(n, [&](auto pol) { thrust::stable_sort_by_key(pol, keys, keys + n, values); });
   }
+}
+// The same over the first n elements of two buffers (each at least n long); the CUDA
+// backend may hand the buffers its alternate arrays instead of copying the result back.
+template <class K, class V>
+void sort_pairs(Context<Cpu>& c, Buffer<K, Cpu>& keys, Buffer<V, Cpu>& values, std::size_t n,
+                int end_bit = int(sizeof(K) * 8)) {
+  sort_pairs(c, keys.data(), values.data(), n, end_bit);
 }
 // In-place removal of consecutive duplicates; returns the new count (synchronizes).
 // (Thrust's in-place unique on the OpenMP system is not safe with several threads:
@@ -336,6 +344,30 @@ void sort_pairs(Context<Cuda>& c, K* keys, V* values, std::size_t n, int end_bit
   });
   if (dk.Current() != keys) detail::Memory<Cuda>::copy(c, keys, dk.Current(), n * sizeof(K));
   if (dv.Current() != values) detail::Memory<Cuda>::copy(c, values, dv.Current(), n * sizeof(V));
+}
+// The radix sort's result lies in its alternate arrays after an odd number of passes
+// (ceil(end_bit / 8): three for 24 bits): there the buffers take those arrays' storage
+// (with their elements past n copied over) instead of a copy back of n keys and values.
+// (Pointers into the buffers taken before the call are stale after it.)
+template <class K, class V>
+void sort_pairs(Context<Cuda>& c, Buffer<K, Cuda>& keys, Buffer<V, Cuda>& values, std::size_t n,
+                int end_bit = int(sizeof(K) * 8)) {
+  if (n < 2) return;
+  Buffer<K, Cuda> altk(c, keys.size());
+  Buffer<V, Cuda> altv(c, values.size());
+  cub::DoubleBuffer<K> dk(keys.data(), altk.data());
+  cub::DoubleBuffer<V> dv(values.data(), altv.data());
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceRadixSort::SortPairs(t, b, dk, dv, static_cast<std::int64_t>(n), 0, end_bit, c.stream());
+  });
+  auto take = [&](auto& buf, auto& alt, const void* cur) {
+    if (cur == static_cast<const void*>(buf.data())) return;
+    using T = std::remove_reference_t<decltype(*buf.data())>;
+    if (buf.size() > n) detail::Memory<Cuda>::copy(c, alt.data() + n, buf.data() + n, (buf.size() - n) * sizeof(T));
+    std::swap(buf, alt);
+  };
+  take(keys, altk, dk.Current());
+  take(values, altv, dv.Current());
 }
 template <class T>
 std::size_t unique(Context<Cuda>& c, T* data, std::size_t n) {

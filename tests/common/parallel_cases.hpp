@@ -177,6 +177,30 @@ void parallel_layer_cases(par::Context<B>& ctx) {
     std::sort(sk.begin(), sk.end());
     EXPECT_EQ(kb.to_host(), sk);
 
+    // sort pairs on buffers: stable over the first m elements, the buffers' tails kept;
+    // 20-bit keys take three radix passes on CUDA, so there the buffers take the sort's
+    // alternate arrays
+    {
+      const std::size_t m = n, len = n + 3;
+      std::vector<std::uint32_t> k2(len);
+      for (auto& x : k2) x = static_cast<std::uint32_t>(rng() % 4096) << 8;  // ties in all 20 bits
+      Buffer<std::uint32_t, B> k2b(ctx);
+      k2b.assign(k2);
+      Buffer<std::int32_t, B> v2b(ctx, len);
+      sequence(ctx, v2b.data(), len, std::int32_t(0));
+      sort_pairs(ctx, k2b, v2b, m, 20);
+      std::vector<std::int32_t> p2(len);
+      std::iota(p2.begin(), p2.end(), 0);
+      std::stable_sort(p2.begin(), p2.begin() + static_cast<std::ptrdiff_t>(m),
+                       [&](int x, int y) { return k2[x] < k2[y]; });
+      std::vector<std::uint32_t> s2(len);
+      for (std::size_t i = 0; i < len; ++i) s2[i] = k2[p2[i]];
+      ASSERT_EQ(k2b.size(), len);
+      ASSERT_EQ(v2b.size(), len);
+      EXPECT_EQ(v2b.to_host(), p2);
+      EXPECT_EQ(k2b.to_host(), s2);
+    }
+
     // unique after sort
     std::size_t u = unique(ctx, kb.data(), n);
     std::vector<std::uint64_t> uk = sk;
