@@ -136,6 +136,17 @@ gpu_tests() {
   done
 }
 
+# gpu_tests, then gpu_predicates: all_gpu_tests
+all_gpu_tests() {
+  gpu_tests
+  step gpu_predicates 60 "$tbin/gpu_predicates"
+}
+
+# Whether the card has more than 120 000 MiB (an H200: room for uniform 2*10^8): big_gpu
+big_gpu() {
+  [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]
+}
+
 # uniform 10^7 (medians of 3) R7 times and uniform, grid and sphere 10^6 (medians of 5) R6
 # times, gdel-bench-old then gdel-bench, and at 10^7 also each runner given after them
 # (bench_NAME, as bench: steps TAG_e7_NAME1, ...): old_new TAG R7 R6 [bench_NAME...]
@@ -1709,8 +1720,7 @@ PY
     done
     GDEL_PROFILE=1 GDEL_VOTE_IN_PROPOSE=0 GDEL_DAG_RESET=sparse bench s57b_e7p_off 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s57b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     bench s57b_15e7 150 --dist uniform --n 150000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
   s57c)  # session 57 (not run: no device lent): s57b with the accepted flags' pass back (old = s56b's binary), the tet sort's gather (GDEL_REORDER_GATHER=1), GPU tests
@@ -1748,8 +1758,7 @@ PY
     GDEL_REORDER_GATHER=1 GDEL_REORDER_EVERY=1 step gpu_gflip3d_gather 200 "$tbin/gpu_gflip3d"
     ;;
   s58b)  # session 58: every GPU test on HEAD's binaries
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     ;;
   s58c)  # session 58: HEAD (the gather by default): gpu_gdel3d, uniform 10^7 and 10^6 against the scatter (GDEL_REORDER_GATHER=0) and session 52's GDEL_REORDER_SHARE=8, then 2*10^8 uniform (on an H200 the estimate, 96.7 GB, admits it)
     step gpu_gdel3d 200 "$tbin/gpu_gdel3d"
@@ -1773,8 +1782,7 @@ PY
     step gpu_mesh 60 "$tbin/gpu_mesh"
     ;;
   s59a)  # session 59: one 32-byte record a tet (vertices + neighbour tets): every GPU test, then uniform 10^8 (peak B/point) with GDEL_PROFILE
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     GDEL_FLIP_TRACE=1 bench s59a_e6_trace 60 --dist uniform --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s59a_e8 250 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
@@ -1808,13 +1816,12 @@ PY
     for v in new sas; do
       grep -h "^profile series\|^gflip3d " "/tmp/gpu-run-s60a_e7p_$v.log" >"$out/series_e7_$v.txt"
     done
-    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+    if big_gpu; then
       bench s60a_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
   s60b)  # session 60: every GPU test on the new binaries, then gFlip3D's and gDel3D's under GDEL_SORT_AFTER_SPLIT=1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     GDEL_SORT_AFTER_SPLIT=1 step gpu_gdel3d_sas 200 "$tbin/gpu_gdel3d"
     GDEL_SORT_AFTER_SPLIT=1 step gpu_gflip3d_sas 200 "$tbin/gpu_gflip3d"
     ;;
@@ -1835,12 +1842,10 @@ PY
     GDEL_PROFILE=1 bench_old s60c_e6p_old 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s60c_e6p_new 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_CLAIM_SPREAD=0 GDEL_PROFILE=1 bench s60c_e6p_top 60 --dist grid,sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     ;;
   s60d)  # session 60: the final binaries (s60a's changes without the study knob; no SlotSource::spread): every GPU test, uniform 10^7 x2 and 10^6 against HEAD 9d56081
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     for r in 1 2; do
       bench_old "s60d_e7_old$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
       bench "s60d_e7_new$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
@@ -1853,8 +1858,7 @@ PY
     GDEL_PROFILE=1 bench_old s61a_e7p_old 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench s61a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     bench s61a_e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     ;;
   s61b|s61c)  # session 61: final binaries against HEAD faa27de (old) and s61a's binary (noclear: a relinked neighbour's flag left set); s61b: the flag cleared by an atomic AND on the state byte, s61c: the flags in the neighbour entries' sign bits (a relink clears them): uniform 10^7 x3, 10^6 x2, a profile, uniform 10^8, every GPU test
     bench_noclear() {
@@ -1864,12 +1868,11 @@ PY
     old_new "$plan" 3 2 bench_noclear
     GDEL_PROFILE=1 bench "${plan}_e7p_new" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     bench "${plan}_e8" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     ;;
   s61d)  # session 61: the final binaries on an H200 against HEAD faa27de (old): uniform 10^7 x3, 10^6 x1, uniform 2*10^8 where the card holds it
     old_new s61d 3 1
-    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+    if big_gpu; then
       bench s61d_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
@@ -1893,8 +1896,7 @@ for (_, r, s), n in zip(items, names):
         print(f"   {sys.argv[1]}: regs {r:>3} stack {s:>5}  {n[:60]} ... {n[-60:]}")
 ' "$b" | tee -a "$out/summary.txt"
     done
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     ;;
   s62b)  # session 62: a tet's record loaded beside its state in the proposals, a neighbour's record beside its stamp in the adjacency pass (new), against s62a's binary with GDEL_LAZY_APEX=0 (prev: HEAD's device code and the clean-ups) and HEAD 4874eaa's device code (old); the fast passes (par::fast_then_exact) compiled for 4 or 5 resident blocks an SM (GDEL_FAST_MIN_BLOCKS: mb4, mb5): uniform 10^7 x3, 10^6 x1, profiles, the fast kernels' registers, every GPU test (default)
     bench_prev() {
@@ -1924,12 +1926,10 @@ for (_, r, s), n in zip(items, names):
         label = kind.group(1) + (kind.group(2) or "") if kind else n[:40]
         print(f"   regs {r:>3} stack {s:>5}  {label}  ... {n[-90:]}")
 ' | tee -a "$out/summary.txt"
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     ;;
   s62c)  # session 62: the final binaries (HEAD 4874eaa's device code with the clean-ups) against session 61's (old): every GPU test, uniform 10^7 x2, 10^6 x1; then ncu's speed-of-light, warp-state, memory and occupancy sections over three late large launches at 10^7 of the proposals' fast pass and of the flips' (records + tets) fast pass
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     old_new s62c 2 1
     ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
     for k in flip_iteration commit_flips; do
@@ -1941,7 +1941,7 @@ for (_, r, s), n in zip(items, names):
     ;;
   s62d)  # session 62: the final binaries on an H200 against session 61's (old): uniform 10^7 x3, 10^6 x1, uniform 2*10^8 where the card holds it
     old_new s62d 3 1
-    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+    if big_gpu; then
       bench s62d_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
@@ -1960,9 +1960,8 @@ for (_, r, s), n in zip(items, names):
       step "s63a_sass_$b" 60 bash -c "'$ncu' -i '$out/prop-$b.ncu-rep' --page source --print-source sass --csv > '$out/prop-sass-$b.csv'"
       step "s63a_details_$b" 60 "$ncu" -i "$out/prop-$b.ncu-rep" --page details
     done
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
-    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+    all_gpu_tests
+    if big_gpu; then
       bench s63a_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
@@ -1974,7 +1973,7 @@ for (_, r, s), n in zip(items, names):
     GDEL_PROFILE=1 bench s63b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 bench_vtx s63b_e7p_vtx 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_ACTIVE_VERTEX=1 step gpu_gflip3d_vtx 200 "$tbin/gpu_gflip3d"
-    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+    if big_gpu; then
       bench s63b_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
@@ -1985,9 +1984,8 @@ for (_, r, s), n in zip(items, names):
     ab s63c 3 1 bench bench_auto
     GDEL_PROFILE=1 bench_auto s63c_e7p_auto 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     bench_auto s63c_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
-    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+    all_gpu_tests
+    if big_gpu; then
       bench_auto s63c_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
@@ -2007,9 +2005,8 @@ for (_, r, s), n in zip(items, names):
     ab s64a 3 2 bench bench_off bench_k64 bench_sh8 bench_re2
     GDEL_PROFILE=1 bench s64a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     bench s64a_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
-    if [ "$(nvidia-smi --query-gpu=memory.total --format=csv,noheader,nounits | head -1)" -gt 120000 ]; then
+    all_gpu_tests
+    if big_gpu; then
       bench s64a_2e8 300 --dist uniform --n 200000000 --methods gdel3d-cuda-dev --repeat 1
     fi
     ;;
@@ -2017,8 +2014,7 @@ for (_, r, s), n in zip(items, names):
     ab s64b 3 2 bench bench_old
     GDEL_PROFILE=1 bench s64b_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     bench s64b_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests
-    step gpu_predicates 60 "$tbin/gpu_predicates"
+    all_gpu_tests
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
