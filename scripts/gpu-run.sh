@@ -2016,6 +2016,40 @@ for (_, r, s), n in zip(items, names):
     bench s64b_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     all_gpu_tests
     ;;
+  s65a)  # session 65: the next active set in stream order (the candidates' own order, no sort; the new default, GDEL_ACTIVE_SPACE unset) against session 64's default (GDEL_ACTIVE_SPACE=sort: sorted by vertex past 2^23 slots, slot order below) and stream order with the tet sort every second round (GDEL_REORDER_EVERY=2): uniform 10^7 x3, 10^6 x2, profiles, uniform 10^8, every GPU test
+    bench_sort() {
+      GDEL_ACTIVE_SPACE=sort bench "$@"
+    }
+    bench_re2() {
+      GDEL_REORDER_EVERY=2 bench "$@"
+    }
+    ab s65a 3 2 bench bench_sort bench_re2
+    GDEL_PROFILE=1 bench s65a_e7p_new 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench_sort s65a_e7p_sort 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s65a_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    all_gpu_tests
+    ;;
+  s65b)  # session 65: stream order (the default) against session 64's (GDEL_ACTIVE_SPACE=sort) and the tet sort every second round, uniform 10^7 x3; stream against sort at 10^6 x3 (the grid's ratio to uniform); uniform 10^8
+    bench_sort() {
+      GDEL_ACTIVE_SPACE=sort bench "$@"
+    }
+    bench_re2() {
+      GDEL_REORDER_EVERY=2 bench "$@"
+    }
+    ab s65b 3 0 bench bench_sort bench_re2
+    ab s65b 0 3 bench bench_sort
+    bench s65b_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    ;;
+  s65c)  # session 65: uniform 10^8 in stream order (the default) and in session 64's order (GDEL_ACTIVE_SPACE=sort), alternating, twice
+    for r in 1 2; do
+      bench "s65c_1e8_new$r" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+      GDEL_ACTIVE_SPACE=sort bench "s65c_1e8_sort$r" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    done
+    ;;
+  s65d)  # session 65: auto switches from stream to space order at 2^27 slots: uniform 10^8 (and 10^7 once) at the default
+    bench s65d_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
+    bench s65d_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

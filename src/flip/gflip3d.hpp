@@ -1348,11 +1348,13 @@ class GFlip3D {
       ftop[f - o23[f]] = t;
     };
     // next active set: the rejected proposers (the stuck tets among them) that no flip
-    // took, and the flips' new tets, in slot order. Candidate c < np is proposer c, kept
+    // took, and the flips' new tets, in stream, space or slot order (stream_order,
+    // space_order; the default is stream order). Candidate c < np is proposer c, kept
     // unless a flip took its tet (stamped by ExecuteFlip: left to that flip, or freed; an
     // accepted proposer's own flip took it);
     // c >= np is new tet (c - np) % 3 of flip (c - np) / 3 (-1: none). Each tet is the
-    // candidate of exactly one c. By default the candidates' tets are listed, then
+    // candidate of exactly one c. In stream order the candidates' tets are listed in the
+    // order of c, in the team or by one compaction. Otherwise they are listed, then
     // sorted: in a team (small iterations), and on the GPU in a large iteration where the
     // bound is below 1/kListedActiveRatio of the slots (on the CPU a sort costs more than
     // the pass). Otherwise each is marked (kQueued) and the marked slots are gathered in
@@ -1372,8 +1374,11 @@ class GFlip3D {
     };
     const std::int64_t abound = np + 3 * nfl;  // the next active set's bound
     const bool list_in_team = team && !active_by_slots_;
-    const bool list_large = B::is_device && !team && !active_by_slots_ && active_listed_large_ &&
-                            abound * kListedActiveRatio < mesh_.size();
+    // in stream order (stream_order) the candidates are listed in their own order: no
+    // marks, no pass over the slots, no sort
+    const bool stream = stream_order();
+    const bool list_large = !team && !active_by_slots_ &&
+                            (stream || (B::is_device && active_listed_large_ && abound * kListedActiveRatio < mesh_.size()));
     // the next active set in space order (space_order): by the smallest finite vertex of
     // each tet (the points are in curve order), ties by tet id; else in slot order. The
     // team sorts distinct 64-bit keys (vertex, tet id); the other paths put the set in
@@ -1422,7 +1427,9 @@ class GFlip3D {
           if (by_space) skp[j] = space_key(lp[j]);
         }
         tm.sync();
-        if (by_space) {
+        if (stream) {
+          for (std::int64_t j = tm.rank(); j < k; j += tm.size()) acp[j] = lp[j];
+        } else if (by_space) {
           par::team_sort_distinct(tm, skp, k, skp + abound);
           for (std::int64_t j = tm.rank(); j < k; j += tm.size()) acp[j] = static_cast<tid_t>(skp[abound + j] & 0xffffffffu);
         } else {
@@ -1449,7 +1456,12 @@ class GFlip3D {
     off23.release();
     // With `defer` its length stays on the backend (counts_[4]): the next iteration runs
     // over the bound, np + 3 nfl, without a wait here (bench/RESULTS.md, session 20).
-    if (list_large) {  // unused entries (past the count) sort last, as the slot count
+    if (list_large && stream) {  // the candidates in their order (entries past the count unused)
+      act.resize(static_cast<std::size_t>(abound));
+      tid_t* acp = act.data();
+      par::select_mapped_to(ctx_, static_cast<std::size_t>(abound), acp, cn + 4, candidate,
+                            [=] GDEL_LAMBDA(tid_t t) { return t >= 0; });
+    } else if (list_large) {  // unused entries (past the count) sort last, as the slot count
       act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
       const std::int64_t* cnt = cn + 4;
@@ -1852,21 +1864,36 @@ class GFlip3D {
   // three pairs and no slower at 10^6 (bench/RESULTS.md, session 58).
   bool reorder_gather_ = !par::knob_off("GDEL_REORDER_GATHER");
   bool active_by_slots_ = par::knob_on("GDEL_ACTIVE_SLOTS");
-  // Whether commit_flips puts the next active set in space order, not slot order. Slots
-  // are in space order only just after a tet sort; within a round new tets take freed or
-  // fresh slots, so a warp's active tets lie apart, and share few neighbours and points.
-  // In space order the proposals, the flips and their adjacency ran 31, 6 and 26 ms
-  // faster at 10^7 for 30 ms more in the set's step, −52 to −55 ms a run on the H100, and
-  // uniform 10^8 5.97 s where it took 7.33; at 10^6 a study's sort cost more than it
-  // saved (bench/RESULTS.md, sessions 63 and 64). GDEL_ACTIVE_SPACE:
-  // "1" always; "0" never; else ("auto", the default) on a mesh of at least
-  // kSpaceOrderMinSlots slots (≈ 1.2 * 10^6 points) and not with independent splits,
-  // whose studies were measured in slot order (forced on, its test's thin shells, 3 x
-  // 20 000 points, left 126 facets stuck against 75 on the CPU backend).
-  enum class SpaceOrder { kOff, kOn, kAuto };
+  // The order of a flip iteration's next active set. Slots are in space order only just
+  // after a tet sort; within a round new tets take freed or fresh slots, so in slot order
+  // a warp's active tets lie apart and share few neighbours and points.
+  // * Stream order (stream_order): the candidates in their own order, the rejected
+  //   proposers in the order of the set they came from, then the flips' new tets in the
+  //   order of their proposers (a round's first set, the split's children, is in the
+  //   curve order of the inserted points): two runs, each in the order of the last set,
+  //   listed by one compaction (par::select_mapped_to) with no sort and no pass over the
+  //   slots.
+  // * Space order (space_order): sorted by each tet's smallest finite vertex (the points
+  //   are in curve order), ties by tet id. Against slot order the proposals, the flips
+  //   and their adjacency ran 31, 6 and 26 ms faster at 10^7 for 30 ms more in the set's
+  //   step, −52 to −55 ms a run on the H100, and uniform 10^8 5.97 s where it took 7.33;
+  //   at 10^6 a study's sort cost more than it saved (bench/RESULTS.md, sessions 63, 64).
+  // GDEL_ACTIVE_SPACE: unset or "auto" (the default) stream order below stream_max_slots_
+  // slots and space order from there, but slot order with independent splits, whose
+  // studies were measured in slot order (space order forced on, its test's thin shells,
+  // 3 x 20 000 points, left 126 facets stuck against 75 on the CPU backend); "stream"
+  // stream order always; "sort" (session 64's default) space
+  // order on a mesh of at least kSpaceOrderMinSlots slots (≈ 1.2 * 10^6 points), slot
+  // order below it and with independent splits; "1" space order always; "0" slot order.
+  // GDEL_ACTIVE_SLOTS=1 (the slots' pass) turns stream order into slot order.
+  enum class SpaceOrder { kOff, kOn, kAuto, kSorted, kStream };
   static SpaceOrder space_order_setting() {
     const std::string v = par::knob_value("GDEL_ACTIVE_SPACE");
-    return v == "1" ? SpaceOrder::kOn : v == "0" ? SpaceOrder::kOff : SpaceOrder::kAuto;
+    return v == "1"        ? SpaceOrder::kOn
+           : v == "0"      ? SpaceOrder::kOff
+           : v == "sort"   ? SpaceOrder::kSorted
+           : v == "stream" ? SpaceOrder::kStream
+                           : SpaceOrder::kAuto;
   }
   SpaceOrder space_order_ = space_order_setting();
   // GDEL_SPACE_SHIFT=k (a measurement knob, default 0): the space order's key is the
@@ -1877,9 +1904,24 @@ class GFlip3D {
     return e ? std::clamp(std::atoi(e), 0, 31) : 0;
   }();
   static constexpr std::int64_t kSpaceOrderMinSlots = std::int64_t(1) << 23;
+  // auto's switch from stream to space order: at 10^8 points stream order ran 6.34 s
+  // where space order ran 5.97 (at 10^7, whose meshes stay below 2^27 slots, it was
+  // 16-20 ms faster; bench/RESULTS.md, session 65). GDEL_STREAM_MAX_SLOTS sets it for
+  // measurements.
+  std::int64_t stream_max_slots_ = [] {
+    const char* e = std::getenv("GDEL_STREAM_MAX_SLOTS");
+    return e ? std::max<std::int64_t>(0, std::atoll(e)) : std::int64_t(1) << 27;
+  }();
   bool space_order() const {
-    if (space_order_ != SpaceOrder::kAuto) return space_order_ == SpaceOrder::kOn;
-    return !cfg_.independent_splits && mesh_.size() >= kSpaceOrderMinSlots;
+    if (space_order_ == SpaceOrder::kOn) return true;
+    if (cfg_.independent_splits) return false;
+    if (space_order_ == SpaceOrder::kSorted) return mesh_.size() >= kSpaceOrderMinSlots;
+    return space_order_ == SpaceOrder::kAuto && mesh_.size() >= stream_max_slots_;
+  }
+  bool stream_order() const {
+    if (active_by_slots_) return false;
+    return space_order_ == SpaceOrder::kStream ||
+           (space_order_ == SpaceOrder::kAuto && !cfg_.independent_splits && mesh_.size() < stream_max_slots_);
   }
   // insertion in SoS order (decide_sos_order): tets proposed so far, ties being counted
   // (counts_[5]), switched

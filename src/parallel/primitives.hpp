@@ -17,6 +17,7 @@
 #include <thrust/count.h>
 #include <thrust/execution_policy.h>
 #include <thrust/iterator/counting_iterator.h>
+#include <thrust/iterator/transform_iterator.h>
 #include <thrust/reduce.h>
 #include <thrust/scan.h>
 #include <thrust/sort.h>
@@ -35,6 +36,16 @@
 #endif
 
 namespace gdel::par {
+
+namespace detail {
+// f(i) as a T (select_mapped_to's input: an explicit type, as CUB needs from a lambda
+// whose return type the host cannot query)
+template <class T, class F>
+struct MapIndex {
+  F f;
+  GDEL_HD T operator()(std::int64_t i) const { return f(i); }
+};
+}  // namespace detail
 
 // ---------------------------------------------------------------------------
 // CPU backend
@@ -99,6 +110,14 @@ std::size_t select_indices(Context<Cpu>&, std::size_t n, I* out, Pred pred) {
 template <class I, class Pred>
 void select_indices_to(Context<Cpu>& c, std::size_t n, I* out, std::int64_t* count, Pred pred) {
   *count = static_cast<std::int64_t>(select_indices(c, n, out, pred));
+}
+// The values f(i) (of type T) that keep(f(i)) accepts, for i in [0, n) in ascending order,
+// to out; their count to *count (backend memory; the CUDA form does not wait): a
+// selection and a map in one pass.
+template <class T, class F, class Keep>
+void select_mapped_to(Context<Cpu>&, std::size_t n, T* out, std::int64_t* count, F f, Keep keep) {
+  auto in = thrust::make_transform_iterator(thrust::counting_iterator<std::int64_t>(0), detail::MapIndex<T, F>{f});
+  *count = with_policy(n, [&](auto pol) { return static_cast<std::int64_t>(thrust::copy_if(pol, in, in + n, out, keep) - out); });
 }
 // f(i) for i in [0, min(n, *count)), *count in backend memory, set by an earlier call on
 // the stream: n bounds the work the host knows of, *count is what the backend found.
@@ -294,6 +313,17 @@ void select_indices_to(Context<Cuda>& c, std::size_t n, I* out, std::int64_t* co
   thrust::counting_iterator<I> first(0);
   detail::with_temp(c, [&](void* t, std::size_t& b) {
     return cub::DeviceSelect::If(t, b, first, out, count, static_cast<std::int64_t>(n), pred, c.stream());
+  });
+}
+template <class T, class F, class Keep>
+void select_mapped_to(Context<Cuda>& c, std::size_t n, T* out, std::int64_t* count, F f, Keep keep) {
+  if (!n) {
+    detail::Memory<Cuda>::memset(c, count, 0, sizeof(std::int64_t));
+    return;
+  }
+  auto in = thrust::make_transform_iterator(thrust::counting_iterator<std::int64_t>(0), detail::MapIndex<T, F>{f});
+  detail::with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceSelect::If(t, b, in, out, count, static_cast<std::int64_t>(n), keep, c.stream());
   });
 }
 template <class I, class Pred>

@@ -281,9 +281,12 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) {
 // (GDEL_ACTIVE_SLOTS=1 and the large sets): the same list, or the paths' flips part. On
 // integer input (the grid, the sphere) a large iteration's exact proposals run a face per
 // thread (split) or, GDEL_SPLIT_EXACT=0, a tet per thread: no teams with each. Sphere
-// points: every insphere test an exact tie. All of it twice: in slot order (what the
-// default, GDEL_ACTIVE_SPACE=auto, gives on meshes this small) and with the next active
-// sets in space order (GDEL_ACTIVE_SPACE=1), whose ties go by tet id on every path.
+// points: every insphere test an exact tie. All of it three times: with the next active
+// sets in slot order (GDEL_ACTIVE_SPACE=0), in space order (GDEL_ACTIVE_SPACE=1), whose
+// ties go by tet id on every path, and in stream order (the default: the candidates' own
+// order, the same on the team's and the large path; the slots' pass, GDEL_ACTIVE_SLOTS=1,
+// turns it off, so those paths are left out there); and with the default switching from
+// stream to space order mid-run (GDEL_STREAM_MAX_SLOTS).
 inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
   struct Path {
     const char* team_max;
@@ -298,10 +301,11 @@ inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
                         {"100000000", "spread", "1"},
                         {"1024", "auto", "1", "1"},
                         {"0", "auto", "1", "1"}};
-  auto check_order = [&](const std::vector<double>& pts, const Options& o) {
+  auto check_order = [&](const std::vector<double>& pts, const Options& o, bool with_slots = true) {
     const Triangulation base = delaunay(pts, o);
     expect_flip_output_valid(pts, base, b);
     for (const Path& p : paths) {
+      if (!with_slots && std::string(p.slots) == "1") continue;
       SCOPED_TRACE(std::string("GDEL_TEAM_MAX=") + p.team_max + " GDEL_TEAM_PROPOSE=" + p.propose +
                    " GDEL_SPLIT_EXACT=" + p.split + " GDEL_ACTIVE_SLOTS=" + p.slots);
       ::setenv("GDEL_TEAM_MAX", p.team_max, 1);
@@ -322,13 +326,22 @@ inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
   };
   auto check = [&](const std::vector<double>& pts, const Options& o) {
     {
-      SCOPED_TRACE("slot order");
+      SCOPED_TRACE("stream order (the default)");
+      check_order(pts, o, /*with_slots=*/false);
+    }
+    for (const char* order : {"0", "1"}) {
+      SCOPED_TRACE(std::string("GDEL_ACTIVE_SPACE=") + order);
+      ::setenv("GDEL_ACTIVE_SPACE", order, 1);
       check_order(pts, o);
     }
-    SCOPED_TRACE("space order (GDEL_ACTIVE_SPACE=1)");
-    ::setenv("GDEL_ACTIVE_SPACE", "1", 1);
-    check_order(pts, o);
     ::unsetenv("GDEL_ACTIVE_SPACE");
+    // the default's switch from stream to space order (past 2^27 slots) within the run:
+    // here at about three slots a point, half way
+    const std::string mid = std::to_string(pts.size());
+    SCOPED_TRACE("stream, then space order (GDEL_STREAM_MAX_SLOTS=" + mid + ")");
+    ::setenv("GDEL_STREAM_MAX_SLOTS", mid.c_str(), 1);
+    check_order(pts, o, /*with_slots=*/false);
+    ::unsetenv("GDEL_STREAM_MAX_SLOTS");
   };
   for_flip_study_inputs(b, n, 11, check);
   SCOPED_TRACE("sphere");

@@ -156,6 +156,19 @@ void parallel_layer_cases(par::Context<B>& ctx) {
         for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(hh[i], static_cast<std::int64_t>(i) < want ? 1 : 0) << i;
       }
     }
+    // a selection of mapped values (the map applied once, the kept values in index order)
+    {
+      Buffer<std::int64_t, B> c(ctx, 1);
+      Buffer<std::int32_t, B> val(ctx, std::max<std::size_t>(n, 1));
+      select_mapped_to(
+          ctx, n, val.data(), c.data(),
+          [=] GDEL_LAMBDA(std::int64_t i) { return (ap[i] % 3) == 0 ? static_cast<std::int32_t>(2 * i + 1) : std::int32_t(-1); },
+          [=] GDEL_LAMBDA(std::int32_t v) { return v >= 0; });
+      ASSERT_EQ(c.get(0), static_cast<std::int64_t>(k));
+      auto vh = val.to_host();
+      vh.resize(k);
+      for (std::size_t j = 0; j < k; ++j) ASSERT_EQ(vh[j], 2 * ridx[j] + 1) << j;
+    }
     // counting the same selection (to size an output exactly)
     EXPECT_EQ(count_indices(ctx, n, [=] GDEL_LAMBDA(std::int64_t i) { return (ap[i] % 3) == 0; }),
               static_cast<std::int64_t>(ridx.size()));
