@@ -1380,10 +1380,11 @@ class GFlip3D {
     const bool list_large = !team && !active_by_slots_ &&
                             (stream || (B::is_device && active_listed_large_ && abound * kListedActiveRatio < mesh_.size()));
     // the next active set in space order (space_order): by the smallest finite vertex of
-    // each tet (the points are in curve order), ties by tet id; else in slot order. The
-    // team sorts distinct 64-bit keys (vertex, tet id); the other paths put the set in
-    // slot order first and then sort it stably by the vertex alone, a pair sort of
-    // bit_width(n) bits (3 radix passes at 10^7 where the 64-bit key took 7): the same order.
+    // each tet (the points are in curve order), ties by tet id; else in stream or slot
+    // order. The team sorts distinct 64-bit keys (vertex, tet id); the other paths put
+    // the set in slot order first and then sort it stably by the vertex alone, a pair
+    // sort of bit_width(n) bits (3 radix passes at 10^7 where the 64-bit key took 7): the
+    // same order.
     const bool by_space = space_order();
     const vid_t inf = static_cast<vid_t>(n_);
     const int vbits = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_)));
