@@ -2050,20 +2050,22 @@ for (_, r, s), n in zip(items, names):
     bench s65d_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     bench s65d_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
-  s66a)  # session 66: HEAD's auto (stream order below 2^27 slots, space order from there) against session 64's order (sort) at 10^8, alternating twice; step profiles of both and of stream order throughout at 10^8; the switch at 2^25 and 2^26; uniform 10^7 x3 and its profile with the round trace; gpu_gflip3d (the path test's switch case)
-    step gpu_gflip3d 200 "$tbin/gpu_gflip3d"
+  s66b)  # session 66: HEAD's auto (stream order below 2^27 slots, space order from there) against session 64's order (sort) at 10^8, alternating twice, and the switch at 2^26; every GPU test (the path test's switch case; the CUDA compaction and pair sort now through one helper each); uniform 10^7 x3 against the tet sort only after rounds that inserted 1/8 or 1/4 of the points so far (GDEL_REORDER_SHARE=8, 4), three rounds; step profiles of 10^7 with the round trace, and of auto and sort at 10^8
     e8() { bench "$1" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1; }
-    for r in 1 2; do
-      e8 "s66a_1e8_auto$r"
-      GDEL_ACTIVE_SPACE=sort e8 "s66a_1e8_sort$r"
+    e8 s66b_1e8_auto1
+    GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort1
+    GDEL_STREAM_MAX_SLOTS=67108864 e8 s66b_1e8_sw26
+    e8 s66b_1e8_auto2
+    GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort2
+    all_gpu_tests
+    for r in 1 2 3; do
+      for sh in 0 8 4; do
+        GDEL_REORDER_SHARE=$sh bench "s66b_e7_share${sh}_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+      done
     done
-    GDEL_STREAM_MAX_SLOTS=33554432 e8 s66a_1e8_sw25
-    GDEL_STREAM_MAX_SLOTS=67108864 e8 s66a_1e8_sw26
-    GDEL_PROFILE=1 e8 s66a_1e8p_auto
-    GDEL_PROFILE=1 GDEL_ACTIVE_SPACE=sort e8 s66a_1e8p_sort
-    GDEL_PROFILE=1 GDEL_ACTIVE_SPACE=stream e8 s66a_1e8p_stream
-    bench s66a_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
-    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s66a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s66b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 e8 s66b_1e8p_auto
+    GDEL_PROFILE=1 GDEL_ACTIVE_SPACE=sort e8 s66b_1e8p_sort
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
