@@ -2050,14 +2050,14 @@ for (_, r, s), n in zip(items, names):
     bench s65d_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     bench s65d_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
-  s66b)  # session 66: HEAD's auto (stream order below 2^27 slots, space order from there) against session 64's order (sort) at 10^8, alternating twice, and the switch at 2^26; every GPU test (the path test's switch case; the CUDA compaction and pair sort now through one helper each); uniform 10^7 x3 against the tet sort only after rounds that inserted 1/8 or 1/4 of the points so far (GDEL_REORDER_SHARE=8, 4), three rounds; step profiles of 10^7 with the round trace, and of auto and sort at 10^8
+  s66b)  # session 66 (not run: no device started): every GPU test (the path test's switch case, and the CUDA compaction and pair sort each through one helper where commit 753f150's patch is applied); HEAD's auto against session 64's order (sort) at 10^8, alternating twice (auto: stream order below 2^27 slots, space order from there), and the switch at 2^26; uniform 10^7 x3 against the tet sort only after rounds that inserted 1/8 or 1/4 of the points so far (GDEL_REORDER_SHARE=8, 4), three rounds; step profiles of 10^7 with the round trace, and of auto and sort at 10^8
+    all_gpu_tests
     e8() { bench "$1" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1; }
     e8 s66b_1e8_auto1
     GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort1
     GDEL_STREAM_MAX_SLOTS=67108864 e8 s66b_1e8_sw26
     e8 s66b_1e8_auto2
     GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort2
-    all_gpu_tests
     for r in 1 2 3; do
       for sh in 0 8 4; do
         GDEL_REORDER_SHARE=$sh bench "s66b_e7_share${sh}_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
