@@ -294,37 +294,35 @@ template <class T>
 T reduce_min(Context<Cuda>& c, const T* in, std::size_t n, T init) {
   return reduce_with(c, in, n, cuda::minimum<T>(), init);
 }
+namespace detail {
+// The one stream compaction of the CUDA backend: in[i] for i in [0, n) that keep accepts,
+// in order, to out; their count to *count (device memory, no wait).
+template <class In, class T, class Keep>
+void select_to(Context<Cuda>& c, In in, std::size_t n, T* out, std::int64_t* count, Keep keep) {
+  if (!n) {
+    Memory<Cuda>::memset(c, count, 0, sizeof(std::int64_t));
+    return;
+  }
+  with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceSelect::If(t, b, in, out, count, static_cast<std::int64_t>(n), keep, c.stream());
+  });
+}
+}  // namespace detail
 template <class T, class Pred>
 std::size_t copy_if(Context<Cuda>& c, const T* in, T* out, std::size_t n, Pred pred) {
   if (!n) return 0;
   Buffer<std::int64_t, Cuda> cnt(c, 1);
-  std::int64_t* cp = cnt.data();
-  detail::with_temp(c, [&](void* t, std::size_t& b) {
-    return cub::DeviceSelect::If(t, b, in, out, cp, static_cast<std::int64_t>(n), pred, c.stream());
-  });
+  detail::select_to(c, in, n, out, cnt.data(), pred);
   return static_cast<std::size_t>(cnt.get(0));
 }
 template <class I, class Pred>
 void select_indices_to(Context<Cuda>& c, std::size_t n, I* out, std::int64_t* count, Pred pred) {
-  if (!n) {
-    detail::Memory<Cuda>::memset(c, count, 0, sizeof(std::int64_t));
-    return;
-  }
-  thrust::counting_iterator<I> first(0);
-  detail::with_temp(c, [&](void* t, std::size_t& b) {
-    return cub::DeviceSelect::If(t, b, first, out, count, static_cast<std::int64_t>(n), pred, c.stream());
-  });
+  detail::select_to(c, thrust::counting_iterator<I>(0), n, out, count, pred);
 }
 template <class T, class F, class Keep>
 void select_mapped_to(Context<Cuda>& c, std::size_t n, T* out, std::int64_t* count, F f, Keep keep) {
-  if (!n) {
-    detail::Memory<Cuda>::memset(c, count, 0, sizeof(std::int64_t));
-    return;
-  }
-  auto in = thrust::make_transform_iterator(thrust::counting_iterator<std::int64_t>(0), detail::MapIndex<T, F>{f});
-  detail::with_temp(c, [&](void* t, std::size_t& b) {
-    return cub::DeviceSelect::If(t, b, in, out, count, static_cast<std::int64_t>(n), keep, c.stream());
-  });
+  detail::select_to(c, thrust::make_transform_iterator(thrust::counting_iterator<std::int64_t>(0), detail::MapIndex<T, F>{f}),
+                    n, out, count, keep);
 }
 template <class I, class Pred>
 std::size_t select_indices(Context<Cuda>& c, std::size_t n, I* out, Pred pred) {
@@ -362,6 +360,15 @@ void sort_keys(Context<Cuda>& c, K* keys, std::size_t n, int end_bit = int(sizeo
   });
   if (db.Current() != keys) detail::Memory<Cuda>::copy(c, keys, db.Current(), n * sizeof(K));
 }
+namespace detail {
+// The radix pair sort of both sort_pairs forms: the result in dk.Current(), dv.Current().
+template <class K, class V>
+void radix_pairs(Context<Cuda>& c, cub::DoubleBuffer<K>& dk, cub::DoubleBuffer<V>& dv, std::size_t n, int end_bit) {
+  with_temp(c, [&](void* t, std::size_t& b) {
+    return cub::DeviceRadixSort::SortPairs(t, b, dk, dv, static_cast<std::int64_t>(n), 0, end_bit, c.stream());
+  });
+}
+}  // namespace detail
 template <class K, class V>
 void sort_pairs(Context<Cuda>& c, K* keys, V* values, std::size_t n, int end_bit = int(sizeof(K) * 8)) {
   if (n < 2) return;
@@ -369,9 +376,7 @@ void sort_pairs(Context<Cuda>& c, K* keys, V* values, std::size_t n, int end_bit
   Buffer<V, Cuda> altv(c, n);
   cub::DoubleBuffer<K> dk(keys, altk.data());
   cub::DoubleBuffer<V> dv(values, altv.data());
-  detail::with_temp(c, [&](void* t, std::size_t& b) {
-    return cub::DeviceRadixSort::SortPairs(t, b, dk, dv, static_cast<std::int64_t>(n), 0, end_bit, c.stream());
-  });
+  detail::radix_pairs(c, dk, dv, n, end_bit);
   if (dk.Current() != keys) detail::Memory<Cuda>::copy(c, keys, dk.Current(), n * sizeof(K));
   if (dv.Current() != values) detail::Memory<Cuda>::copy(c, values, dv.Current(), n * sizeof(V));
 }
@@ -387,9 +392,7 @@ void sort_pairs(Context<Cuda>& c, Buffer<K, Cuda>& keys, Buffer<V, Cuda>& values
   Buffer<V, Cuda> altv(c, values.size());
   cub::DoubleBuffer<K> dk(keys.data(), altk.data());
   cub::DoubleBuffer<V> dv(values.data(), altv.data());
-  detail::with_temp(c, [&](void* t, std::size_t& b) {
-    return cub::DeviceRadixSort::SortPairs(t, b, dk, dv, static_cast<std::int64_t>(n), 0, end_bit, c.stream());
-  });
+  detail::radix_pairs(c, dk, dv, n, end_bit);
   auto take = [&](auto& buf, auto& alt, const void* cur) {
     if (cur == static_cast<const void*>(buf.data())) return;
     using T = std::remove_reference_t<decltype(*buf.data())>;
