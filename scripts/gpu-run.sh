@@ -129,6 +129,11 @@ alternate() {
   done
 }
 
+# uniform 10^8 once, uniform 10^7 three times (the median): e8 NAME, e7 NAME (environment
+# as given)
+e8() { bench "$1" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1; }
+e7() { bench "$1" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3; }
+
 # The GPU test binaries present in the binaries' folder, a step each: gpu_tests
 gpu_tests() {
   for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_parallel; do
@@ -2050,22 +2055,42 @@ for (_, r, s), n in zip(items, names):
     bench s65d_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     bench s65d_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
-  s66b)  # session 66 (not run: no device started): every GPU test (the path test's switch case, and the CUDA compaction and pair sort each through one helper where commit 753f150's patch is applied); HEAD's auto against session 64's order (sort) at 10^8, alternating twice (auto: stream order below 2^27 slots, space order from there), and the switch at 2^26; uniform 10^7 x3 against the tet sort only after rounds that inserted 1/8 or 1/4 of the points so far (GDEL_REORDER_SHARE=8, 4), three rounds; step profiles of 10^7 with the round trace, and of auto and sort at 10^8
+  s66b)  # session 66 (not run: no device started; session 67 ran its measurements as s67b): every GPU test (the path test's switch case, and the CUDA compaction and pair sort each through one helper where commit 753f150's patch is applied); HEAD's auto against session 64's order (sort) at 10^8, alternating twice (auto: stream order below 2^27 slots, space order from there), and the switch at 2^26; uniform 10^7 x3 against the tet sort only after rounds that inserted 1/8 or 1/4 of the points so far (GDEL_REORDER_SHARE=8, 4), three rounds; step profiles of 10^7 with the round trace, and of auto and sort at 10^8
     all_gpu_tests
-    e8() { bench "$1" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1; }
     e8 s66b_1e8_auto1
     GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort1
-    GDEL_STREAM_MAX_SLOTS=67108864 e8 s66b_1e8_sw26
-    e8 s66b_1e8_auto2
-    GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort2
     for r in 1 2 3; do
       for sh in 0 8 4; do
-        GDEL_REORDER_SHARE=$sh bench "s66b_e7_share${sh}_$r" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
+        GDEL_REORDER_SHARE=$sh e7 "s66b_e7_share${sh}_$r"
       done
     done
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s66b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_STREAM_MAX_SLOTS=67108864 e8 s66b_1e8_sw26
+    e8 s66b_1e8_auto2
+    GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort2
     GDEL_PROFILE=1 e8 s66b_1e8p_auto
     GDEL_PROFILE=1 GDEL_ACTIVE_SPACE=sort e8 s66b_1e8p_sort
+    ;;
+  s67a)  # session 67: the sparser tet sort (GDEL_REORDER_SHARE=$SHARE, default 4) against every round's at 10^6 x3 (uniform, grid, sphere: the ratios to uniform) and uniform 10^7 x2
+    bench_share() {
+      GDEL_REORDER_SHARE=${SHARE:-4} bench "$@"
+    }
+    ab s67a 0 3 bench bench_share
+    ab s67a 2 0 bench bench_share
+    ;;
+  s67b)  # session 67 (s66b for a short call, its measurements first): uniform 10^8 auto against sort; uniform 10^7 x3 against GDEL_REORDER_SHARE=8, 4, three rounds; gpu_gflip3d and gpu_parallel (the changed code), then the other GPU tests; the 10^7 profile with the round trace; the switch at 2^26 at 10^8
+    e8 s67b_1e8_auto1
+    GDEL_ACTIVE_SPACE=sort e8 s67b_1e8_sort1
+    for r in 1 2 3; do
+      for sh in 0 8 4; do
+        GDEL_REORDER_SHARE=$sh e7 "s67b_e7_share${sh}_$r"
+      done
+    done
+    for t in gpu_gflip3d gpu_parallel gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_predicates; do
+      step "$t" 200 "$tbin/$t"
+    done
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s67b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_STREAM_MAX_SLOTS=67108864 e8 s67b_1e8_sw26
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

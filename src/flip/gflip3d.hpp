@@ -87,9 +87,14 @@ struct FlipConfig {
   // ... and then only when the points inserted since the last sort are at least
   // 1/reorder_share of those inserted so far (0: every reorder_every-th round): the last
   // rounds insert a few per cent of the points, which moves few tets out of order, while
-  // each sort moves the whole mesh (bench/RESULTS.md, session 52). Study knob
-  // GDEL_REORDER_SHARE.
-  int reorder_share = 0;
+  // each sort moves the whole mesh. 4 by default since session 67 (H100, same calls: uniform 10^7
+  // 0.475-0.478 s against 0.499-0.500 with every round's sort, 8 gave 0.489; 2 and 3 the
+  // same sorts as 4 there; 10^6 uniform, grid, sphere and 10^8 unchanged; bench/RESULTS.md).
+  // Under independent splits -1 means 0 (every round's sort): their quality tests'
+  // stuck facets were measured with it and depend on the slot order (with 4, two of them
+  // on the CPU's rounds: 1 182 stuck against 1 145 without non-optimal flips, 310 where
+  // 129 is the bound). Study knob GDEL_REORDER_SHARE (0: every round's sort).
+  int reorder_share = -1;  // -1: 4, or 0 under independent splits
   // Non-optimal flipping once flipping is stuck at the end (Options::nonoptimal_flips):
   // at most nonoptimal_rounds rounds, each of at most nonoptimal_steps parallel steps of
   // non-improving flips followed by a normal flip loop. With independent_splits also one
@@ -160,6 +165,7 @@ class GFlip3D {
     if (const char* e = std::getenv("GDEL_TET_REORDER")) cfg_.reorder_tets = std::atoi(e) != 0;
     if (const char* e = std::getenv("GDEL_REORDER_EVERY")) cfg_.reorder_every = std::max(0, std::atoi(e));
     if (const char* e = std::getenv("GDEL_REORDER_SHARE")) cfg_.reorder_share = std::max(0, std::atoi(e));
+    if (cfg_.reorder_share < 0) cfg_.reorder_share = cfg_.independent_splits ? 0 : 4;
     if (const char* e = std::getenv("GDEL_FLIPS_PER_ITERATION"))
       cfg_.max_flips_per_iteration = std::max<long long>(1, std::atoll(e));
     if (const char* tr = std::getenv("GDEL_FLIP_TRACE")) trace_ = std::atoi(tr) > 1 ? 2 : 1;
@@ -1397,12 +1403,13 @@ class GFlip3D {
     };
     Buffer<tid_t, B> act(ctx_);
     if (team) {
-      Buffer<tid_t, B> listed(ctx_, list_in_team ? static_cast<std::size_t>(abound) : 0);
-      tid_t* lp = listed.data();
+      // In stream order the candidates are selected straight into the next active set.
+      Buffer<tid_t, B> listed(ctx_, list_in_team && !stream ? static_cast<std::size_t>(abound) : 0);
       Buffer<std::uint64_t, B> skeys(ctx_, list_in_team && by_space ? static_cast<std::size_t>(2 * abound) : 0);
       std::uint64_t* skp = skeys.data();
       if (list_in_team) act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
+      tid_t* lp = stream ? acp : listed.data();
       double* work = team_work(g);
       std::int64_t* tally = cn + 3;
       par::team_run(ctx_, [=] GDEL_LAMBDA(const par::Team& tm) {
@@ -1427,15 +1434,14 @@ class GFlip3D {
           lp[j] = candidate(lp[j]);
           if (by_space) skp[j] = space_key(lp[j]);
         }
-        tm.sync();
-        if (stream) {
-          for (std::int64_t j = tm.rank(); j < k; j += tm.size()) acp[j] = lp[j];
-        } else if (by_space) {
+        if (by_space) {
+          tm.sync();
           par::team_sort_distinct(tm, skp, k, skp + abound);
           for (std::int64_t j = tm.rank(); j < k; j += tm.size()) acp[j] = static_cast<tid_t>(skp[abound + j] & 0xffffffffu);
-        } else {
+        } else if (!stream) {
+          tm.sync();
           par::team_sort_distinct(tm, lp, k, acp);
-        }
+        }  // (in stream order lp is act)
         if (tm.rank() == 0) cn[4] = k;
       });
       par::mark(ctx_, "flip: records + tets + adjacency (team)");
@@ -1907,8 +1913,8 @@ class GFlip3D {
   static constexpr std::int64_t kSpaceOrderMinSlots = std::int64_t(1) << 23;
   // auto's switch from stream to space order: at 10^8 points stream order ran 6.34 s
   // where space order ran 5.97 (at 10^7, whose meshes stay below 2^27 slots, it was
-  // 16-20 ms faster; bench/RESULTS.md, session 65). GDEL_STREAM_MAX_SLOTS sets it for
-  // measurements.
+  // 16-20 ms faster; bench/RESULTS.md, session 65); with the switch 5.958 s against
+  // 5.973 (session 67). GDEL_STREAM_MAX_SLOTS sets it for measurements.
   std::int64_t stream_max_slots_ = [] {
     const char* e = std::getenv("GDEL_STREAM_MAX_SLOTS");
     return e ? std::max<std::int64_t>(0, std::atoll(e)) : std::int64_t(1) << 27;
