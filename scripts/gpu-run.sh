@@ -2055,22 +2055,6 @@ for (_, r, s), n in zip(items, names):
     bench s65d_1e8 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     bench s65d_e7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3
     ;;
-  s66b)  # session 66 (not run: no device started; session 67 ran its measurements as s67b): every GPU test (the path test's switch case, and the CUDA compaction and pair sort each through one helper where commit 753f150's patch is applied); HEAD's auto against session 64's order (sort) at 10^8, alternating twice (auto: stream order below 2^27 slots, space order from there), and the switch at 2^26; uniform 10^7 x3 against the tet sort only after rounds that inserted 1/8 or 1/4 of the points so far (GDEL_REORDER_SHARE=8, 4), three rounds; step profiles of 10^7 with the round trace, and of auto and sort at 10^8
-    all_gpu_tests
-    e8 s66b_1e8_auto1
-    GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort1
-    for r in 1 2 3; do
-      for sh in 0 8 4; do
-        GDEL_REORDER_SHARE=$sh e7 "s66b_e7_share${sh}_$r"
-      done
-    done
-    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s66b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_STREAM_MAX_SLOTS=67108864 e8 s66b_1e8_sw26
-    e8 s66b_1e8_auto2
-    GDEL_ACTIVE_SPACE=sort e8 s66b_1e8_sort2
-    GDEL_PROFILE=1 e8 s66b_1e8p_auto
-    GDEL_PROFILE=1 GDEL_ACTIVE_SPACE=sort e8 s66b_1e8p_sort
-    ;;
   s67a)  # session 67: the sparser tet sort (GDEL_REORDER_SHARE=$SHARE, default 4) against every round's at 10^6 x3 (uniform, grid, sphere: the ratios to uniform) and uniform 10^7 x2
     bench_share() {
       GDEL_REORDER_SHARE=${SHARE:-4} bench "$@"
@@ -2078,7 +2062,7 @@ for (_, r, s), n in zip(items, names):
     ab s67a 0 3 bench bench_share
     ab s67a 2 0 bench bench_share
     ;;
-  s67b)  # session 67 (s66b for a short call, its measurements first): uniform 10^8 auto against sort; uniform 10^7 x3 against GDEL_REORDER_SHARE=8, 4, three rounds; gpu_gflip3d and gpu_parallel (the changed code), then the other GPU tests; the 10^7 profile with the round trace; the switch at 2^26 at 10^8
+  s66b | s67b)  # session 67 (session 66's s66b, never run as written, for a short call, its measurements first): uniform 10^8 auto against sort; uniform 10^7 x3 against GDEL_REORDER_SHARE=8, 4, three rounds; gpu_gflip3d and gpu_parallel (the changed code), then the other GPU tests; the 10^7 profile with the round trace; the switch at 2^26 at 10^8
     e8 s67b_1e8_auto1
     GDEL_ACTIVE_SPACE=sort e8 s67b_1e8_sort1
     for r in 1 2 3; do
