@@ -2076,6 +2076,19 @@ for (_, r, s), n in zip(items, names):
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s67b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_STREAM_MAX_SLOTS=67108864 e8 s67b_1e8_sw26
     ;;
+  s68a)  # for session 68: the insertion scores through atomic_raise (GDEL_SCORE_RAISE=1) against every key through an atomic max (the default), uniform 10^7 x3 and 10^6 x2, with step profiles of both at 10^7; every GPU test with the tet sort's share rule the default (GDEL_REORDER_SHARE=4, not yet under the tests on a GPU); uniform 10^8 with the switch to space order at 2^27 (the default) against 2^26 slots, alternating
+    bench_raise() {
+      GDEL_SCORE_RAISE=1 bench "$@"
+    }
+    ab s68a 3 2 bench bench_raise
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s68a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_SCORE_RAISE=1 bench s68a_e7p_raise 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    all_gpu_tests
+    for r in 1 2; do
+      e8 "s68a_1e8_sw27_$r"
+      GDEL_STREAM_MAX_SLOTS=67108864 e8 "s68a_1e8_sw26_$r"
+    done
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

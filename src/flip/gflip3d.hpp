@@ -755,13 +755,24 @@ class GFlip3D {
     const int tie = tie_mode_;
     const bool by_sid = rule == InsertionRule::SosOrder || sos_order_;
     // 1. each tet keeps its best point: key = score bits << 32 | tie_break(point); in SoS
-    // order the score is ~sid (the smallest index first; indices past 2^32 - 2 tie)
+    // order the score is ~sid (the smallest index first; indices past 2^32 - 2 tie). In
+    // the first rounds 10^7 points share a few hundred tets: with GDEL_SCORE_RAISE=1 a
+    // key is written only where the tet's key seen is below it (par::atomic_raise), else
+    // every key through an atomic max; the same keys either way.
+    const bool raise_only = score_raise_;
+    auto offer_key = [=] GDEL_LAMBDA(std::uint64_t* p, std::uint64_t key) {
+      if (raise_only) {
+        par::atomic_raise(p, key);
+      } else {
+        par::atomic_max(p, key);
+      }
+    };
     par::parallel_for(ctx_, u, [=] GDEL_LAMBDA(std::int64_t k) {
       const vid_t q = U[k];
       const tid_t t = vt[q];
       if (by_sid) {
         const std::uint64_t s = 0xffffffffu - std::min<std::uint64_t>(g.sid[q], 0xfffffffeu);
-        par::atomic_max(best + t, (s << 32) | tie_break(std::uint32_t(q), tie));
+        offer_key(best + t, (s << 32) | tie_break(std::uint32_t(q), tie));
         return;
       }
       const vid_t* v = m.tet[t].v;
@@ -789,7 +800,7 @@ class GFlip3D {
       float f = (sc > 0 && sc < 3.0e38) ? static_cast<float>(sc) : (sc >= 3.0e38 ? 3.0e38f : 0.0f);
       std::uint32_t bits;
       std::memcpy(&bits, &f, sizeof bits);
-      par::atomic_max(best + t, (std::uint64_t(bits) << 32) | tie_break(std::uint32_t(q), tie));
+      offer_key(best + t, (std::uint64_t(bits) << 32) | tie_break(std::uint32_t(q), tie));
     });
     par::mark(ctx_, "insert: scores");
     // 2. winners
@@ -1911,6 +1922,9 @@ class GFlip3D {
     return e ? std::clamp(std::atoi(e), 0, 31) : 0;
   }();
   static constexpr std::int64_t kSpaceOrderMinSlots = std::int64_t(1) << 23;
+  // insert_round's scores through par::atomic_raise (GDEL_SCORE_RAISE=1; off until it
+  // has been measured on a GPU: bench/RESULTS.md, session 67)
+  bool score_raise_ = par::knob_on("GDEL_SCORE_RAISE");
   // auto's switch from stream to space order: at 10^8 points stream order ran 6.34 s
   // where space order ran 5.97 (at 10^7, whose meshes stay below 2^27 slots, it was
   // 16-20 ms faster; bench/RESULTS.md, session 65); with the switch 5.958 s against

@@ -29,6 +29,14 @@ GDEL_HD GDEL_FORCEINLINE T atomic_max(T* p, T v) {
   cuda::atomic_ref<T, cuda::thread_scope_device> r(*p);
   return r.fetch_max(v, cuda::memory_order_relaxed);
 }
+// atomic_max without its result, and only a load where *p already holds v or more: for
+// many writers of one address, most of which lose (a maximum only grows, so a value seen
+// at or above v stays there).
+template <class T>
+GDEL_HD GDEL_FORCEINLINE void atomic_raise(T* p, T v) {
+  cuda::atomic_ref<T, cuda::thread_scope_device> r(*p);
+  if (r.load(cuda::memory_order_relaxed) < v) r.fetch_max(v, cuda::memory_order_relaxed);
+}
 template <class T>
 GDEL_HD GDEL_FORCEINLINE T atomic_or(T* p, T v) {
   cuda::atomic_ref<T, cuda::thread_scope_device> r(*p);

@@ -235,10 +235,6 @@ inline void gflip_independent_splits_cases(Backend b) {
   EXPECT_LE(stuck_ind * 5000, facets);
 }
 
-// The flip log is capped (FlipConfig::log_records_per_point): past the cap the uninserted
-// points are relocated through the flips so far and the log restarts. That must not change
-// anything: the same flips and the same triangulation with a cap of a few records
-// (GDEL_FLIP_LOG_RECORDS), i.e. a relocation after almost every flip iteration.
 // Runs body(pts, o) on uniform, thin-shell and grid points (n, seed) with o set to
 // gFlip3D on backend b: the inputs of the flip-machinery studies below.
 template <class F>
@@ -255,19 +251,31 @@ inline void for_flip_study_inputs(Backend b, std::size_t n, std::uint64_t seed, 
   }
 }
 
-inline void gflip_log_flush_cases(Backend b, std::size_t n) {
+// A knob that changes how a step runs, not what it decides, gives the default's flips and
+// output: knob_same_output_cases(b, n, NAME, VALUE)
+inline void knob_same_output_cases(Backend b, std::size_t n, const char* knob, const char* value) {
+  SCOPED_TRACE(std::string(knob) + "=" + value);
   for_flip_study_inputs(b, n, 5, [&](const std::vector<double>& pts, Options o) {
     const Triangulation base = delaunay(pts, o);
-    ::setenv("GDEL_FLIP_LOG_RECORDS", "16", 1);
-    const Triangulation small = delaunay(pts, o);
-    ::unsetenv("GDEL_FLIP_LOG_RECORDS");
-    expect_flip_output_valid(pts, small, b);
-    EXPECT_EQ(small.stats.flips23, base.stats.flips23);
-    EXPECT_EQ(small.stats.flips32, base.stats.flips32);
-    EXPECT_EQ(small.tets, base.tets);
-    EXPECT_EQ(small.neighbors, base.neighbors);
+    ::setenv(knob, value, 1);
+    const Triangulation other = delaunay(pts, o);
+    ::unsetenv(knob);
+    expect_flip_output_valid(pts, other, b);
+    EXPECT_EQ(other.stats.flips23, base.stats.flips23);
+    EXPECT_EQ(other.stats.flips32, base.stats.flips32);
+    EXPECT_EQ(other.tets, base.tets);
+    EXPECT_EQ(other.neighbors, base.neighbors);
   });
 }
+
+// The flip log is capped (FlipConfig::log_records_per_point): past the cap the uninserted
+// points are relocated through the flips so far and the log restarts. That must not change
+// anything: the same flips and the same triangulation with a cap of a few records
+// (GDEL_FLIP_LOG_RECORDS), i.e. a relocation after almost every flip iteration.
+inline void gflip_log_flush_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_FLIP_LOG_RECORDS", "16"); }
+
+// the insertion's scores through par::atomic_raise (the same keys as through atomic_max)
+inline void gflip_score_raise_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_SCORE_RAISE", "1"); }
 
 // A small flip iteration (at most GDEL_TEAM_MAX active tets) runs in two teams, its
 // proposals made in the first team or spread over the device beforehand

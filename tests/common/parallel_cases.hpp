@@ -223,28 +223,39 @@ void parallel_layer_cases(par::Context<B>& ctx) {
     ukh.resize(u);
     EXPECT_EQ(ukh, uk);
 
-    // atomics: histogram with atomic_add, atomic_min per bucket
+    // atomics: histogram with atomic_add, atomic_min per bucket, and the maximum per
+    // bucket through atomic_raise (every item of a bucket on one address) and over all
+    // items on one address
     Buffer<std::int32_t, B> hist(ctx, 64);
     hist.memset(0);
     Buffer<std::int64_t, B> mins(ctx, 64);
     fill(ctx, mins.data(), 64, std::int64_t(1) << 50);
+    Buffer<std::int64_t, B> maxs(ctx, 65);
+    fill(ctx, maxs.data(), 65, std::int64_t(-1));
     std::int32_t* hp = hist.data();
     std::int64_t* mp = mins.data();
+    std::int64_t* xp = maxs.data();
     const std::uint64_t* kp = kb.data();
     (void)kp;
     parallel_for(ctx, static_cast<std::int64_t>(n), [=] GDEL_LAMBDA(std::int64_t i) {
       int bucket = static_cast<int>(ap[i] % 64);
       atomic_add(hp + bucket, 1);
       atomic_min(mp + bucket, ap[i]);
+      atomic_raise(xp + bucket, ap[i]);
+      atomic_raise(xp + 64, ap[i]);
     });
     std::vector<std::int32_t> rh(64, 0);
     std::vector<std::int64_t> rm(64, std::int64_t(1) << 50);
+    std::vector<std::int64_t> rx(65, -1);
     for (auto x : h) {
       rh[x % 64]++;
       rm[x % 64] = std::min(rm[x % 64], x);
+      rx[x % 64] = std::max(rx[x % 64], x);
+      rx[64] = std::max(rx[64], x);
     }
     EXPECT_EQ(hist.to_host(), rh);
     EXPECT_EQ(mins.to_host(), rm);
+    EXPECT_EQ(maxs.to_host(), rx);
 
     // counts -> offsets
     Buffer<std::int64_t, B> cnt(ctx, n + 1);
