@@ -134,9 +134,12 @@ alternate() {
 e8() { bench "$1" 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1; }
 e7() { bench "$1" 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 3; }
 
-# The GPU test binaries present in the binaries' folder, a step each: gpu_tests
+# The GPU test binaries present in the binaries' folder, a step each, in the order given
+# (default: all but gpu_predicates): gpu_tests [NAME...]
 gpu_tests() {
-  for t in gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_parallel; do
+  local names=("$@")
+  [ ${#names[@]} -gt 0 ] || names=(gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_parallel)
+  for t in "${names[@]}"; do
     if [ -x "$tbin/$t" ]; then step "$t" 200 "$tbin/$t"; fi
   done
 }
@@ -2070,9 +2073,7 @@ for (_, r, s), n in zip(items, names):
         GDEL_REORDER_SHARE=$sh e7 "s67b_e7_share${sh}_$r"
       done
     done
-    for t in gpu_gflip3d gpu_parallel gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_predicates; do
-      step "$t" 200 "$tbin/$t"
-    done
+    gpu_tests gpu_gflip3d gpu_parallel gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_predicates
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s67b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_STREAM_MAX_SLOTS=67108864 e8 s67b_1e8_sw26
     ;;
