@@ -2090,6 +2090,15 @@ for (_, r, s), n in zip(items, names):
       GDEL_STREAM_MAX_SLOTS=67108864 e8 "s68a_1e8_sw26_$r"
     done
     ;;
+  s68b)  # session 68: the rounds' points padded to 32 bytes (GDEL_POINT_PAD=1) against the default, on the build with the padding's knob (gdel-bench) and on HEAD d5433b9 before it (gdel-bench-old: the default's runtime point stride against the constant 3), uniform 10^7 x3 and 10^6 x2; the padding's step profile at 10^7; gpu_gflip3d (PointPadChangesNothing); uniform 10^8 padded (its memory)
+    bench_pad() {
+      GDEL_POINT_PAD=1 bench "$@"
+    }
+    ab s68b 3 2 bench_old bench bench_pad
+    GDEL_PROFILE=1 GDEL_POINT_PAD=1 bench s68b_e7p_pad 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests gpu_gflip3d
+    GDEL_POINT_PAD=1 e8 s68b_1e8_pad
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
