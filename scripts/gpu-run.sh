@@ -2099,6 +2099,25 @@ for (_, r, s), n in zip(items, names):
     gpu_tests gpu_gflip3d
     GDEL_POINT_PAD=1 e8 s68b_1e8_pad
     ;;
+  s68c)  # session 68 (s68a and s68b in one build, for a short device time): HEAD d5433b9's binary (gdel-bench-old) against the padding's build at its default, GDEL_SCORE_RAISE=1 and GDEL_POINT_PAD=1, uniform 10^7 x3 and 10^6 x2; step profiles of the three at 10^7; gpu_gflip3d (ScoreRaiseChangesNothing, PointPadChangesNothing, the share default's first run under the tests)
+    bench_raise() {
+      GDEL_SCORE_RAISE=1 bench "$@"
+    }
+    bench_pad() {
+      GDEL_POINT_PAD=1 bench "$@"
+    }
+    ab s68c 3 2 bench_old bench bench_raise bench_pad
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s68c_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_SCORE_RAISE=1 bench s68c_e7p_raise 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_POINT_PAD=1 bench s68c_e7p_pad 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests gpu_gflip3d
+    ;;
+  s68d)  # session 68, after s68c: the other GPU tests; uniform 10^8 padded, and the switch at 2^27 (the default) against 2^26 slots
+    gpu_tests gpu_parallel gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_predicates
+    GDEL_POINT_PAD=1 e8 s68d_1e8_pad
+    e8 s68d_1e8_sw27
+    GDEL_STREAM_MAX_SLOTS=67108864 e8 s68d_1e8_sw26
+    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;

@@ -145,7 +145,8 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), carry_(ctx), team_work_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 6) {
+        active_(ctx), carry_(ctx), team_work_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 6),
+        xyz4_(ctx) {
     counts_.memset(0);
     int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
     quarter_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_, geom::kQuarterScale);
@@ -182,6 +183,7 @@ class GFlip3D {
       sequential_ran_ = true;
       return;
     }
+    pad_points(pad_points_);
     bool flipping = !cfg_.terminal;
     bool flipped_all_along = flipping;
     bool tail = false;  // flipping turned off by the tail rule
@@ -255,6 +257,7 @@ class GFlip3D {
       flip_loop(/*all_tets=*/all, /*with_log=*/false);
       st_.stages.push_back({all ? "final flipping of all tets" : "final flipping of the tail's tets", since(tf)});
     }
+    pad_points(false);
     if (cfg_.nonoptimal) {
       auto tn = std::chrono::steady_clock::now();
       nonoptimal_flipping();
@@ -342,8 +345,31 @@ class GFlip3D {
   }
   vid_t infinite() const { return static_cast<vid_t>(n_); }
   Geo geo() {
-    return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_, int_all_,
-               counting_ties_ ? counts_.data() + 5 : nullptr, k_centroid_, {kq_[0], kq_[1], kq_[2], kq_[3]}};
+    Geo g{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_, int_all_,
+          counting_ties_ ? counts_.data() + 5 : nullptr, k_centroid_, {kq_[0], kq_[1], kq_[2], kq_[3]}};
+    if (xyz4_.size() > 0) {  // (during run's rounds with GDEL_POINT_PAD=1: pad_points)
+      g.xyz = xyz4_.data();
+      g.stride = 4;
+    }
+    return g;
+  }
+  // GDEL_POINT_PAD=1 (a measurement): run's rounds read the points from a copy padded to
+  // 32 bytes a point (x, y, z, 0), each point in one 32-byte sector where three doubles at
+  // a 24-byte stride span two sectors for half the points. Built after the kernel point is
+  // set, released when the rounds end (geo() reads xyz_ again).
+  void pad_points(bool on) {
+    if (!on) {
+      xyz4_.release();
+      return;
+    }
+    const std::int64_t np = n_ + 1;
+    xyz4_.resize(static_cast<std::size_t>(4 * np));
+    const double* X = xyz_.data();
+    double* Y = xyz4_.data();
+    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t i) {
+      for (int c = 0; c < 3; ++c) Y[4 * i + c] = X[3 * i + c];
+      Y[4 * i + 3] = 0.0;
+    });
   }
 
   // --- a given initial structure (src/grid/initial.hpp, Options::initial = grid) ---------
@@ -1925,6 +1951,7 @@ class GFlip3D {
   // insert_round's scores through par::atomic_raise (GDEL_SCORE_RAISE=1; off until it
   // has been measured on a GPU: bench/RESULTS.md, session 67)
   bool score_raise_ = par::knob_on("GDEL_SCORE_RAISE");
+  bool pad_points_ = par::knob_on("GDEL_POINT_PAD");  // pad_points
   // auto's switch from stream to space order: at 10^8 points stream order ran 6.34 s
   // where space order ran 5.97 (at 10^7, whose meshes stay below 2^27 slots, it was
   // 16-20 ms faster; bench/RESULTS.md, session 65); with the switch 5.958 s against
@@ -1962,6 +1989,7 @@ class GFlip3D {
   // [0] proposers, [1] accepted flips, [2] 2-3 flips among them, [3] the exact
   // evaluations of the flip loop (flushed into Stats at its end).
   Buffer<std::int64_t, B> counts_;
+  Buffer<double, B> xyz4_;  // pad_points' copy (empty: none)
   std::int64_t tally_seen_ = 0;  // counts_[3] at the last read
   bool active_deferred_ = false;  // active_'s length is counts_[4], its size a bound (flip_loop)
   std::int64_t exact_seen_ = 0;  // exact items between the last two reads

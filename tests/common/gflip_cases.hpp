@@ -277,6 +277,9 @@ inline void gflip_log_flush_cases(Backend b, std::size_t n) { knob_same_output_c
 // the insertion's scores through par::atomic_raise (the same keys as through atomic_max)
 inline void gflip_score_raise_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_SCORE_RAISE", "1"); }
 
+// the rounds' points read from a copy padded to 32 bytes a point (the same values)
+inline void gflip_point_pad_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_POINT_PAD", "1"); }
+
 // A small flip iteration (at most GDEL_TEAM_MAX active tets) runs in two teams, its
 // proposals made in the first team or spread over the device beforehand
 // (GDEL_TEAM_PROPOSE); a large one runs device-wide steps. Every path lists its
