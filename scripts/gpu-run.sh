@@ -118,6 +118,11 @@ bench_old() {
   bench "$@"
 }
 
+# bench with the insertion's scores through atomic_raise, with the rounds' points padded
+# to 32 bytes (session 68): bench_raise / bench_pad NAME LIMIT ARGS
+bench_raise() { GDEL_SCORE_RAISE=1 bench "$@"; }
+bench_pad() { GDEL_POINT_PAD=1 bench "$@"; }
+
 # old / new binary alternating, ROUNDS times (default 2), on the same arguments, both in
 # the JSON: alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
 alternate() {
@@ -2078,9 +2083,6 @@ for (_, r, s), n in zip(items, names):
     GDEL_STREAM_MAX_SLOTS=67108864 e8 s67b_1e8_sw26
     ;;
   s68a)  # for session 68: the insertion scores through atomic_raise (GDEL_SCORE_RAISE=1) against every key through an atomic max (the default), uniform 10^7 x3 and 10^6 x2, with step profiles of both at 10^7; every GPU test with the tet sort's share rule the default (GDEL_REORDER_SHARE=4, not yet under the tests on a GPU); uniform 10^8 with the switch to space order at 2^27 (the default) against 2^26 slots, alternating
-    bench_raise() {
-      GDEL_SCORE_RAISE=1 bench "$@"
-    }
     ab s68a 3 2 bench bench_raise
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s68a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_SCORE_RAISE=1 bench s68a_e7p_raise 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
@@ -2091,25 +2093,20 @@ for (_, r, s), n in zip(items, names):
     done
     ;;
   s68b)  # session 68: the rounds' points padded to 32 bytes (GDEL_POINT_PAD=1) against the default, on the build with the padding's knob (gdel-bench) and on HEAD d5433b9 before it (gdel-bench-old: the default's runtime point stride against the constant 3), uniform 10^7 x3 and 10^6 x2; the padding's step profile at 10^7; gpu_gflip3d (PointPadChangesNothing); uniform 10^8 padded (its memory)
-    bench_pad() {
-      GDEL_POINT_PAD=1 bench "$@"
-    }
     ab s68b 3 2 bench_old bench bench_pad
     GDEL_PROFILE=1 GDEL_POINT_PAD=1 bench s68b_e7p_pad 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     gpu_tests gpu_gflip3d
     GDEL_POINT_PAD=1 e8 s68b_1e8_pad
     ;;
   s68c)  # session 68 (s68a and s68b in one build, for a short device time): HEAD d5433b9's binary (gdel-bench-old) against the padding's build at its default, GDEL_SCORE_RAISE=1 and GDEL_POINT_PAD=1, uniform 10^7 x3 and 10^6 x2; step profiles of the three at 10^7; gpu_gflip3d (ScoreRaiseChangesNothing, PointPadChangesNothing, the share default's first run under the tests)
-    bench_raise() {
-      GDEL_SCORE_RAISE=1 bench "$@"
-    }
-    bench_pad() {
-      GDEL_POINT_PAD=1 bench "$@"
-    }
     ab s68c 3 2 bench_old bench bench_raise bench_pad
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s68c_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_SCORE_RAISE=1 bench s68c_e7p_raise 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_POINT_PAD=1 bench s68c_e7p_pad 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests gpu_gflip3d
+    ;;
+  s68e)  # session 68, s68c shortened for a short device time: two rounds at 10^7, one at 10^6, then gpu_gflip3d as far as the budget goes
+    ab s68e 2 1 bench_old bench bench_raise bench_pad
     gpu_tests gpu_gflip3d
     ;;
   s68d)  # session 68, after s68c: the other GPU tests; uniform 10^8 padded, and the switch at 2^27 (the default) against 2^26 slots
