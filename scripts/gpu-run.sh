@@ -119,9 +119,11 @@ bench_old() {
 }
 
 # bench with the insertion's scores through atomic_raise, with the rounds' points padded
-# to 32 bytes (session 68): bench_raise / bench_pad NAME LIMIT ARGS
+# to 32 bytes, with the proposals' inputs gathered by a pass of their own (session 68):
+# bench_raise / bench_pad / bench_gather NAME LIMIT ARGS
 bench_raise() { GDEL_SCORE_RAISE=1 bench "$@"; }
 bench_pad() { GDEL_POINT_PAD=1 bench "$@"; }
+bench_gather() { GDEL_PROPOSE_GATHER=1 bench "$@"; }
 
 # old / new binary alternating, ROUNDS times (default 2), on the same arguments, both in
 # the JSON: alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
@@ -2098,15 +2100,16 @@ for (_, r, s), n in zip(items, names):
     gpu_tests gpu_gflip3d
     GDEL_POINT_PAD=1 e8 s68b_1e8_pad
     ;;
-  s68c)  # session 68 (s68a and s68b in one build, for a short device time): HEAD d5433b9's binary (gdel-bench-old) against the padding's build at its default, GDEL_SCORE_RAISE=1 and GDEL_POINT_PAD=1, uniform 10^7 x3 and 10^6 x2; step profiles of the three at 10^7; gpu_gflip3d (ScoreRaiseChangesNothing, PointPadChangesNothing, the share default's first run under the tests)
-    ab s68c 3 2 bench_old bench bench_raise bench_pad
+  s68c)  # session 68 (s68a and s68b in one build, for a short device time): HEAD d5433b9's binary (gdel-bench-old) against the build with the session's knobs at its default, GDEL_SCORE_RAISE=1, GDEL_POINT_PAD=1 and GDEL_PROPOSE_GATHER=1, uniform 10^7 x3 and 10^6 x2; step profiles of the four at 10^7; gpu_gflip3d (ScoreRaiseChangesNothing, PointPadChangesNothing, ProposeGatherChangesNothing, the share default's first run under the tests)
+    ab s68c 3 2 bench_old bench bench_raise bench_pad bench_gather
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s68c_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_SCORE_RAISE=1 bench s68c_e7p_raise 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_POINT_PAD=1 bench s68c_e7p_pad 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_PROPOSE_GATHER=1 bench s68c_e7p_gather 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     gpu_tests gpu_gflip3d
     ;;
   s68e)  # session 68, s68c shortened for a short device time: two rounds at 10^7, one at 10^6, then gpu_gflip3d as far as the budget goes
-    ab s68e 2 1 bench_old bench bench_raise bench_pad
+    ab s68e 2 1 bench_old bench bench_raise bench_pad bench_gather
     gpu_tests gpu_gflip3d
     ;;
   s68d)  # session 68, after s68c: the other GPU tests; uniform 10^8 padded, and the switch at 2^27 (the default) against 2^26 slots

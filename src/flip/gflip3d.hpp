@@ -1017,31 +1017,53 @@ class GFlip3D {
       pp[k] = p;
       if (vote_here && p >= 0) cast_vote(m, A[k], p, vote, vstamp);
     };
-    auto fast = [=] GDEL_LAMBDA(std::int64_t k) {
-      if (alen && k >= *alen) {
-        pp[k] = -1;  // past the active set: no proposal
-        return true;
-      }
-      const int p = propose_flip<false>(g, m, A[k], nullptr);
+    auto past = [=] GDEL_LAMBDA(std::int64_t k) {
+      const bool out = alen && k >= *alen;
+      if (out) pp[k] = -1;  // past the active set: no proposal
+      return out;
+    };
+    auto settle = [=] GDEL_LAMBDA(std::int64_t k, int p) {
       if (p == kUndecidedResult) return false;
       decided(k, p);
       return true;
     };
-    if (g.int_all && split_exact_) {  // the undecided tets' exact proposals a face per thread
-      auto part = [=] GDEL_LAMBDA(std::int64_t k, int i, auto work) {
-        return face_proposal(g, m, A[k], i, work);
-      };
-      auto join = [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { decided(k, join_face_proposals(r)); };
-      st_.exact_evaluations += par::fast_then_split(ctx_, na, und.data(), fast, 4, part, join, exact_tally());
+    auto fast = [=] GDEL_LAMBDA(std::int64_t k) {
+      return past(k) || settle(k, propose_flip<false>(g, m, A[k], nullptr));
+    };
+    // with GDEL_PROPOSE_GATHER=1 (a measurement) the fast pass reads each tet's inputs
+    // gathered by a pass of their own (gather_proposal); the exact forms read the mesh
+    Buffer<ProposalIn, B> gin(ctx_, propose_gather_ ? static_cast<std::size_t>(na) : 0);
+    ProposalIn* gp = gin.data();
+    auto fast_gathered = [=] GDEL_LAMBDA(std::int64_t k) {
+      return past(k) || settle(k, propose_gathered<false>(g, gp[k], nullptr));
+    };
+    // the undecided tets' exact proposals: on integer input a face per thread (part, join)
+    auto part = [=] GDEL_LAMBDA(std::int64_t k, int i, auto work) { return face_proposal(g, m, A[k], i, work); };
+    auto join = [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { decided(k, join_face_proposals(r)); };
+    auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
+      const int p = propose_flip<true>(g, m, A[k], work);
+      if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
+      decided(k, p);
+      return true;
+    };
+    auto propose_all = [&](auto fast_pass) {
+      if (g.int_all && split_exact_) {
+        st_.exact_evaluations += par::fast_then_split(ctx_, na, und.data(), fast_pass, 4, part, join, exact_tally());
+      } else {
+        st_.exact_evaluations +=
+            fast_then_exact(ctx_, g, na, und.data(), fast_pass, exact, exact_tally(), scratch_threads());
+      }
+    };
+    if (propose_gather_) {
+      par::parallel_for(ctx_, na, [=] GDEL_LAMBDA(std::int64_t k) {
+        if (!(alen && k >= *alen)) gather_proposal(m, A[k], gp[k]);
+      });
+      par::mark(ctx_, "flip: gather proposal inputs");
+      propose_all(fast_gathered);
     } else {
-      auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
-        const int p = propose_flip<true>(g, m, A[k], work);
-        if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
-        decided(k, p);
-        return true;
-      };
-      st_.exact_evaluations += fast_then_exact(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
+      propose_all(fast);
     }
+    gin.release();
     par::mark(ctx_, "flip: propose");
     und.release();
     active_deferred_ = false;
@@ -1896,6 +1918,9 @@ class GFlip3D {
   int spread_block_ = spread_block_setting();
   bool split_exact_ = split_exact_setting();
   bool vote_in_propose_ = vote_in_propose_setting();
+  // GDEL_PROPOSE_GATHER=1 (a measurement, off): a large iteration's fast proposals read
+  // inputs gathered by a pass of their own (flip_kernels.hpp's ProposalIn)
+  bool propose_gather_ = par::knob_on("GDEL_PROPOSE_GATHER");
   enum class DagReset { kAuto, kSparse, kDense };
   static DagReset dag_reset_setting() {
     const std::string v = par::knob_value("GDEL_DAG_RESET");

@@ -280,6 +280,11 @@ inline void gflip_score_raise_cases(Backend b, std::size_t n) { knob_same_output
 // the rounds' points read from a copy padded to 32 bytes a point (the same values)
 inline void gflip_point_pad_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_POINT_PAD", "1"); }
 
+// the large iterations' fast proposals from inputs gathered by a pass of their own
+inline void gflip_propose_gather_cases(Backend b, std::size_t n) {
+  knob_same_output_cases(b, n, "GDEL_PROPOSE_GATHER", "1");
+}
+
 // A small flip iteration (at most GDEL_TEAM_MAX active tets) runs in two teams, its
 // proposals made in the first team or spread over the device beforehand
 // (GDEL_TEAM_PROPOSE); a large one runs device-wide steps. Every path lists its
