@@ -2084,23 +2084,7 @@ for (_, r, s), n in zip(items, names):
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s67b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_STREAM_MAX_SLOTS=67108864 e8 s67b_1e8_sw26
     ;;
-  s68a)  # for session 68: the insertion scores through atomic_raise (GDEL_SCORE_RAISE=1) against every key through an atomic max (the default), uniform 10^7 x3 and 10^6 x2, with step profiles of both at 10^7; every GPU test with the tet sort's share rule the default (GDEL_REORDER_SHARE=4, not yet under the tests on a GPU); uniform 10^8 with the switch to space order at 2^27 (the default) against 2^26 slots, alternating
-    ab s68a 3 2 bench bench_raise
-    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s68a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 GDEL_SCORE_RAISE=1 bench s68a_e7p_raise 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    all_gpu_tests
-    for r in 1 2; do
-      e8 "s68a_1e8_sw27_$r"
-      GDEL_STREAM_MAX_SLOTS=67108864 e8 "s68a_1e8_sw26_$r"
-    done
-    ;;
-  s68b)  # session 68: the rounds' points padded to 32 bytes (GDEL_POINT_PAD=1) against the default, on the build with the padding's knob (gdel-bench) and on HEAD d5433b9 before it (gdel-bench-old: the default's runtime point stride against the constant 3), uniform 10^7 x3 and 10^6 x2; the padding's step profile at 10^7; gpu_gflip3d (PointPadChangesNothing); uniform 10^8 padded (its memory)
-    ab s68b 3 2 bench_old bench bench_pad
-    GDEL_PROFILE=1 GDEL_POINT_PAD=1 bench s68b_e7p_pad 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests gpu_gflip3d
-    GDEL_POINT_PAD=1 e8 s68b_1e8_pad
-    ;;
-  s68c)  # session 68 (s68a and s68b in one build, for a short device time): HEAD d5433b9's binary (gdel-bench-old) against the build with the session's knobs at its default, GDEL_SCORE_RAISE=1, GDEL_POINT_PAD=1 and GDEL_PROPOSE_GATHER=1, uniform 10^7 x3 and 10^6 x2; step profiles of the four at 10^7; gpu_gflip3d (ScoreRaiseChangesNothing, PointPadChangesNothing, ProposeGatherChangesNothing, the share default's first run under the tests)
+  s68a | s68b | s68c)  # session 68; s68a (the score raise) and s68b (the point padding), planned first, are in this one call (their 10^8 runs in s68d): HEAD d5433b9's binary (gdel-bench-old) against the build with the session's knobs at its default, GDEL_SCORE_RAISE=1, GDEL_POINT_PAD=1 and GDEL_PROPOSE_GATHER=1, uniform 10^7 x3 and 10^6 x2; step profiles of the four at 10^7; gpu_gflip3d (ScoreRaiseChangesNothing, PointPadChangesNothing, ProposeGatherChangesNothing, the share default's first run under the tests)
     ab s68c 3 2 bench_old bench bench_raise bench_pad bench_gather
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s68c_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_SCORE_RAISE=1 bench s68c_e7p_raise 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1

@@ -183,7 +183,7 @@ class GFlip3D {
       sequential_ran_ = true;
       return;
     }
-    pad_points(pad_points_);
+    if (pad_points_) pad_points();
     bool flipping = !cfg_.terminal;
     bool flipped_all_along = flipping;
     bool tail = false;  // flipping turned off by the tail rule
@@ -257,7 +257,7 @@ class GFlip3D {
       flip_loop(/*all_tets=*/all, /*with_log=*/false);
       st_.stages.push_back({all ? "final flipping of all tets" : "final flipping of the tail's tets", since(tf)});
     }
-    pad_points(false);
+    xyz4_.release();  // (pad_points' copy, if any: geo() reads xyz_ again)
     if (cfg_.nonoptimal) {
       auto tn = std::chrono::steady_clock::now();
       nonoptimal_flipping();
@@ -357,11 +357,7 @@ class GFlip3D {
   // 32 bytes a point (x, y, z, 0), each point in one 32-byte sector where three doubles at
   // a 24-byte stride span two sectors for half the points. Built after the kernel point is
   // set, released when the rounds end (geo() reads xyz_ again).
-  void pad_points(bool on) {
-    if (!on) {
-      xyz4_.release();
-      return;
-    }
+  void pad_points() {
     const std::int64_t np = n_ + 1;
     xyz4_.resize(static_cast<std::size_t>(4 * np));
     const double* X = xyz_.data();
@@ -1017,9 +1013,10 @@ class GFlip3D {
       pp[k] = p;
       if (vote_here && p >= 0) cast_vote(m, A[k], p, vote, vstamp);
     };
+    auto beyond = [=] GDEL_LAMBDA(std::int64_t k) { return alen && k >= *alen; };  // past the active set
     auto past = [=] GDEL_LAMBDA(std::int64_t k) {
-      const bool out = alen && k >= *alen;
-      if (out) pp[k] = -1;  // past the active set: no proposal
+      const bool out = beyond(k);
+      if (out) pp[k] = -1;  // no proposal
       return out;
     };
     auto settle = [=] GDEL_LAMBDA(std::int64_t k, int p) {
@@ -1041,10 +1038,7 @@ class GFlip3D {
     auto part = [=] GDEL_LAMBDA(std::int64_t k, int i, auto work) { return face_proposal(g, m, A[k], i, work); };
     auto join = [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { decided(k, join_face_proposals(r)); };
     auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
-      const int p = propose_flip<true>(g, m, A[k], work);
-      if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
-      decided(k, p);
-      return true;
+      return settle(k, propose_flip<true>(g, m, A[k], work));  // (undecided with work = nullptr: it needs the scratch)
     };
     auto propose_all = [&](auto fast_pass) {
       if (g.int_all && split_exact_) {
@@ -1056,7 +1050,7 @@ class GFlip3D {
     };
     if (propose_gather_) {
       par::parallel_for(ctx_, na, [=] GDEL_LAMBDA(std::int64_t k) {
-        if (!(alen && k >= *alen)) gather_proposal(m, A[k], gp[k]);
+        if (!beyond(k)) gather_proposal(m, A[k], gp[k]);
       });
       par::mark(ctx_, "flip: gather proposal inputs");
       propose_all(fast_gathered);
