@@ -118,12 +118,9 @@ bench_old() {
   bench "$@"
 }
 
-# bench with the insertion's scores through atomic_raise, with the rounds' points padded
-# to 32 bytes, with the proposals' inputs gathered by a pass of their own (session 68):
-# bench_raise / bench_pad / bench_gather NAME LIMIT ARGS
-bench_raise() { GDEL_SCORE_RAISE=1 bench "$@"; }
-bench_pad() { GDEL_POINT_PAD=1 bench "$@"; }
-bench_gather() { GDEL_PROPOSE_GATHER=1 bench "$@"; }
+# bench with every insertion score through an atomic max, not atomic_raise (session 69's
+# default): bench_noraise NAME LIMIT ARGS
+bench_noraise() { GDEL_SCORE_RAISE=0 bench "$@"; }
 
 # old / new binary alternating, ROUNDS times (default 2), on the same arguments, both in
 # the JSON: alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
@@ -147,7 +144,7 @@ gpu_tests() {
   local names=("$@")
   [ ${#names[@]} -gt 0 ] || names=(gpu_gflip3d gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_parallel)
   for t in "${names[@]}"; do
-    if [ -x "$tbin/$t" ]; then step "$t" 200 "$tbin/$t"; fi
+    if [ -x "$tbin/$t" ]; then step "$t" 300 "$tbin/$t"; fi  # (gpu_gflip3d: 203 s on the H100)
   done
 }
 
@@ -2084,23 +2081,12 @@ for (_, r, s), n in zip(items, names):
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s67b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_STREAM_MAX_SLOTS=67108864 e8 s67b_1e8_sw26
     ;;
-  s68a | s68b | s68c)  # session 68; s68a (the score raise) and s68b (the point padding), planned first, are in this one call (their 10^8 runs in s68d): HEAD d5433b9's binary (gdel-bench-old) against the build with the session's knobs at its default, GDEL_SCORE_RAISE=1, GDEL_POINT_PAD=1 and GDEL_PROPOSE_GATHER=1, uniform 10^7 x3 and 10^6 x2; step profiles of the four at 10^7; gpu_gflip3d (ScoreRaiseChangesNothing, PointPadChangesNothing, ProposeGatherChangesNothing, the share default's first run under the tests)
-    ab s68c 3 2 bench_old bench bench_raise bench_pad bench_gather
-    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s68c_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 GDEL_SCORE_RAISE=1 bench s68c_e7p_raise 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 GDEL_POINT_PAD=1 bench s68c_e7p_pad 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 GDEL_PROPOSE_GATHER=1 bench s68c_e7p_gather 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    gpu_tests gpu_gflip3d
-    ;;
-  s68e)  # session 68, s68c shortened for a short device time: two rounds at 10^7, one at 10^6, then gpu_gflip3d as far as the budget goes
-    ab s68e 2 1 bench_old bench bench_raise bench_pad bench_gather
-    gpu_tests gpu_gflip3d
-    ;;
-  s68d)  # session 68, after s68c: the other GPU tests; uniform 10^8 padded, and the switch at 2^27 (the default) against 2^26 slots
-    gpu_tests gpu_parallel gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_predicates
-    GDEL_POINT_PAD=1 e8 s68d_1e8_pad
-    e8 s68d_1e8_sw27
-    GDEL_STREAM_MAX_SLOTS=67108864 e8 s68d_1e8_sw26
+  s69a)  # session 69: the build with the insertion's scores through atomic_raise by default (the point padding and the gathered proposals dropped) against HEAD d5433b9's binary (gdel-bench-old) and against itself with GDEL_SCORE_RAISE=0, uniform 10^7 x3 and 10^6 x2; its step profile at 10^7; gpu_gflip3d's knob tests and gpu_parallel; uniform 10^8
+    ab s69a 3 2 bench_old bench bench_noraise
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s69a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    step gpu_gflip3d_knobs 120 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
+    gpu_tests gpu_parallel
+    e8 s69a_1e8
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

@@ -160,9 +160,8 @@ GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, W
   return bl == 0 ? (1 << 4) | (i << 2) : -1;
 }
 
-// Calls f(bv, apex, i) for the faces i of a tet (vertices bv, apex[] across its faces) in
-// todo (for_non_ld_faces: those of tet b that have a neighbour and are not internal)
-// that are not locally Delaunay, in order, until
+// Calls f(bv, apex, i) for the faces i of tet b (vertices bv, apex[] across its faces)
+// that have a neighbour, are not internal and are not locally Delaunay, in order, until
 // f returns something other than -1; returns that value, -1, or kUndecidedResult.
 // (All four apexes are loaded first, internal faces' too: loading those only for a tet
 // with a face that is not locally Delaunay, which most active tets lack, made the large
@@ -174,8 +173,19 @@ GDEL_HD int face_flip(const Geo& g, const vid_t* bv, const vid_t* apex, int i, W
 // 7 % fewer instructions so, but not faster: it waits on its chain of dependent loads
 // (bench/RESULTS.md, session 63).
 template <bool Exact, class Work, class F>
-GDEL_HD std::int64_t for_faces_to_test(const Geo& g, const vid_t* bv, const vid_t* apex, unsigned todo, Work work,
-                                       F f) {
+GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, Work work, F f) {
+  if (!m.alive(b)) return -1;
+  const Tet bt = m.tet[b];
+  const vid_t* bv = bt.v;
+  tid_t nt[4];
+  std::uint8_t fl[4];
+  m.get_adj(b, nt, fl);
+  vid_t apex[4];
+  unsigned todo = 0;  // the faces to test
+  for (int i = 0; i < 4; ++i) {
+    apex[i] = apex_in(m, nt[i], bv, i);
+    if (nt[i] >= 0 && !(fl[i] & mesh::kInternal)) todo |= 1u << i;
+  }
   for (; todo != 0; todo &= todo - 1) {
     const int i = lowest_bit(todo);
     const vid_t ai = pick4(apex, i);
@@ -187,83 +197,19 @@ GDEL_HD std::int64_t for_faces_to_test(const Geo& g, const vid_t* bv, const vid_
   }
   return -1;
 }
-// What a tet's proposal reads of the mesh: its vertices bv, the apexes across its faces
-// and the faces to test (todo: a neighbour there, not internal; 0 for a dead tet).
-GDEL_HD inline unsigned proposal_inputs(const MeshView& m, tid_t b, vid_t* bv, vid_t* apex) {
-  if (!m.alive(b)) {
-    for (int i = 0; i < 4; ++i) bv[i] = apex[i] = kNoVertex;
-    return 0;
-  }
-  const Tet bt = m.tet[b];
-  for (int i = 0; i < 4; ++i) bv[i] = bt.v[i];
-  tid_t nt[4];
-  std::uint8_t fl[4];
-  m.get_adj(b, nt, fl);
-  unsigned todo = 0;
-  for (int i = 0; i < 4; ++i) {
-    apex[i] = apex_in(m, nt[i], bv, i);
-    if (nt[i] >= 0 && !(fl[i] & mesh::kInternal)) todo |= 1u << i;
-  }
-  return todo;
-}
-template <bool Exact, class Work, class F>
-GDEL_HD std::int64_t for_non_ld_faces(const Geo& g, const MeshView& m, tid_t b, Work work, F f) {
-  vid_t bv[4], apex[4];
-  const unsigned todo = proposal_inputs(m, b, bv, apex);
-  return for_faces_to_test<Exact>(g, bv, apex, todo, work, f);
-}
-
-// A tet's proposal inputs gathered by a pass of their own (GFlip3D's GDEL_PROPOSE_GATHER=1,
-// a measurement): 32 bytes, the faces to test in the sign bits of v (vertex ids are
-// below 2^31). The pass that gathers them needs few registers, so more warps wait on its
-// chain of dependent loads (active id, record, neighbours' records); the pass that tests
-// them (propose_gathered) then waits on one round of loads, the points.
-struct ProposalIn {
-  vid_t v[4];
-  vid_t apex[4];
-};
-GDEL_HD inline void gather_proposal(const MeshView& m, tid_t b, ProposalIn& o) {
-  vid_t bv[4], apex[4];
-  const unsigned todo = proposal_inputs(m, b, bv, apex);
-  for (int i = 0; i < 4; ++i) {
-    o.v[i] = static_cast<vid_t>((static_cast<std::uint32_t>(bv[i]) & 0x7fffffffu) | (((todo >> i) & 1u) << 31));
-    o.apex[i] = apex[i];
-  }
-}
-template <bool Exact, class Work, class F>
-GDEL_HD std::int64_t for_gathered_faces(const Geo& g, const ProposalIn& in, Work work, F f) {
-  vid_t bv[4], apex[4];
-  unsigned todo = 0;
-  for (int i = 0; i < 4; ++i) {
-    const std::uint32_t x = static_cast<std::uint32_t>(in.v[i]);
-    bv[i] = static_cast<vid_t>(x & 0x7fffffffu);
-    todo |= (x >> 31) << i;
-    apex[i] = in.apex[i];
-  }
-  return for_faces_to_test<Exact>(g, bv, apex, todo, work, f);
-}
 
 // The flip tet b proposes: that of its first face with a valid flip (faces that are not
 // flippable now are skipped); kStuckResult when it has non-locally-Delaunay faces but
 // none is flippable, -1 when all its faces are locally Delaunay, or kUndecidedResult.
-template <bool Exact, class Work, class Faces>
-GDEL_HD int proposal_over(const Geo& g, Work work, Faces faces) {
+template <bool Exact, class Work>
+GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, Work work) {
   bool stuck = false;
-  const int r = static_cast<int>(faces([&](const vid_t* bv, const vid_t* apex, int i) {
+  const int r = static_cast<int>(for_non_ld_faces<Exact>(g, m, b, work, [&](const vid_t* bv, const vid_t* apex, int i) {
     const int f = face_flip<Exact>(g, bv, apex, i, work);
     stuck = stuck || f == -1;
     return std::int64_t(f);
   }));
   return r == -1 && stuck ? kStuckResult : r;
-}
-template <bool Exact, class Work>
-GDEL_HD int propose_flip(const Geo& g, const MeshView& m, tid_t b, Work work) {
-  return proposal_over<Exact>(g, work, [&](auto f) { return for_non_ld_faces<Exact>(g, m, b, work, f); });
-}
-// The same from the gathered inputs (gather_proposal).
-template <bool Exact, class Work>
-GDEL_HD int propose_gathered(const Geo& g, const ProposalIn& in, Work work) {
-  return proposal_over<Exact>(g, work, [&](auto f) { return for_gathered_faces<Exact>(g, in, work, f); });
 }
 
 // propose_flip's exact form split by face (par::split_scratch_free, on integer input:

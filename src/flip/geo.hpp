@@ -67,17 +67,13 @@ struct Geo {
   // rule above); +1: ∞'s id stands for K itself (gFlip3D's first location, whose cone
   // tests are orientations with K).
   int inf_sign = -1;
-  // Doubles from one point to the next in xyz: 3, or 4 where gFlip3D's rounds read a copy
-  // padded to 32 bytes a point, each point in one 32-byte sector (GDEL_POINT_PAD=1:
-  // GFlip3D::pad_points; a measurement).
-  std::int32_t stride = 3;
   // K as another Geo over the same points has it (k_centroid and kq).
   void take_kernel_point(const Geo& o) {
     k_centroid = o.k_centroid;
     for (int i = 0; i < 4; ++i) kq[i] = o.kq[i];
   }
 
-  GDEL_HD const double* p(vid_t v) const { return xyz + stride * static_cast<std::int64_t>(v); }
+  GDEL_HD const double* p(vid_t v) const { return xyz + 3 * static_cast<std::int64_t>(v); }
   // Whether an exact form may go on with work = nullptr (see the top of this file): over
   // finite points only, and over any points.
   GDEL_HD bool finite_scratch_free() const { return int_points || int_all; }

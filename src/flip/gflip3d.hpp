@@ -145,8 +145,7 @@ class GFlip3D {
   GFlip3D(Context<B>& ctx, Buffer<double, B>& xyz, Buffer<std::int64_t, B>& sid, std::int64_t n, FlipConfig cfg,
           Stats& stats)
       : ctx_(ctx), xyz_(xyz), sid_(sid), n_(n), cfg_(cfg), st_(stats), mesh_(ctx), vert_tet_(ctx), todo_(ctx),
-        active_(ctx), carry_(ctx), team_work_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 6),
-        xyz4_(ctx) {
+        active_(ctx), carry_(ctx), team_work_(ctx), aux_key_(ctx), aux_pick_(ctx), log_(ctx), counts_(ctx, 6) {
     counts_.memset(0);
     int_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_);
     quarter_points_ = all_integer_points(ctx_, xyz_.data(), nullptr, n_, geom::kQuarterScale);
@@ -183,7 +182,6 @@ class GFlip3D {
       sequential_ran_ = true;
       return;
     }
-    if (pad_points_) pad_points();
     bool flipping = !cfg_.terminal;
     bool flipped_all_along = flipping;
     bool tail = false;  // flipping turned off by the tail rule
@@ -257,7 +255,6 @@ class GFlip3D {
       flip_loop(/*all_tets=*/all, /*with_log=*/false);
       st_.stages.push_back({all ? "final flipping of all tets" : "final flipping of the tail's tets", since(tf)});
     }
-    xyz4_.release();  // (pad_points' copy, if any: geo() reads xyz_ again)
     if (cfg_.nonoptimal) {
       auto tn = std::chrono::steady_clock::now();
       nonoptimal_flipping();
@@ -345,27 +342,8 @@ class GFlip3D {
   }
   vid_t infinite() const { return static_cast<vid_t>(n_); }
   Geo geo() {
-    Geo g{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_, int_all_,
-          counting_ties_ ? counts_.data() + 5 : nullptr, k_centroid_, {kq_[0], kq_[1], kq_[2], kq_[3]}};
-    if (xyz4_.size() > 0) {  // (during run's rounds with GDEL_POINT_PAD=1: pad_points)
-      g.xyz = xyz4_.data();
-      g.stride = 4;
-    }
-    return g;
-  }
-  // GDEL_POINT_PAD=1 (a measurement): run's rounds read the points from a copy padded to
-  // 32 bytes a point (x, y, z, 0), each point in one 32-byte sector where three doubles at
-  // a 24-byte stride span two sectors for half the points. Built after the kernel point is
-  // set, released when the rounds end (geo() reads xyz_ again).
-  void pad_points() {
-    const std::int64_t np = n_ + 1;
-    xyz4_.resize(static_cast<std::size_t>(4 * np));
-    const double* X = xyz_.data();
-    double* Y = xyz4_.data();
-    par::parallel_for(ctx_, np, [=] GDEL_LAMBDA(std::int64_t i) {
-      for (int c = 0; c < 3; ++c) Y[4 * i + c] = X[3 * i + c];
-      Y[4 * i + 3] = 0.0;
-    });
+    return Geo{xyz_.data(), sid_.data(), static_cast<vid_t>(n_), nullptr, int_points_, int_all_,
+               counting_ties_ ? counts_.data() + 5 : nullptr, k_centroid_, {kq_[0], kq_[1], kq_[2], kq_[3]}};
   }
 
   // --- a given initial structure (src/grid/initial.hpp, Options::initial = grid) ---------
@@ -778,9 +756,11 @@ class GFlip3D {
     const bool by_sid = rule == InsertionRule::SosOrder || sos_order_;
     // 1. each tet keeps its best point: key = score bits << 32 | tie_break(point); in SoS
     // order the score is ~sid (the smallest index first; indices past 2^32 - 2 tie). In
-    // the first rounds 10^7 points share a few hundred tets: with GDEL_SCORE_RAISE=1 a
-    // key is written only where the tet's key seen is below it (par::atomic_raise), else
-    // every key through an atomic max; the same keys either way.
+    // the first rounds 10^7 points share a few hundred tets: a key goes through the atomic
+    // only where the tet's key it reads is below it (par::atomic_raise), not every key
+    // through an atomic max (GDEL_SCORE_RAISE=0, for measurements); the same keys either
+    // way. On the H100 at 10^7 the scores' step fell from 22.9 to 4.7 ms (bench/RESULTS.md,
+    // session 69).
     const bool raise_only = score_raise_;
     auto offer_key = [=] GDEL_LAMBDA(std::uint64_t* p, std::uint64_t key) {
       if (raise_only) {
@@ -1013,51 +993,31 @@ class GFlip3D {
       pp[k] = p;
       if (vote_here && p >= 0) cast_vote(m, A[k], p, vote, vstamp);
     };
-    auto beyond = [=] GDEL_LAMBDA(std::int64_t k) { return alen && k >= *alen; };  // past the active set
-    auto past = [=] GDEL_LAMBDA(std::int64_t k) {
-      const bool out = beyond(k);
-      if (out) pp[k] = -1;  // no proposal
-      return out;
-    };
-    auto settle = [=] GDEL_LAMBDA(std::int64_t k, int p) {
+    auto fast = [=] GDEL_LAMBDA(std::int64_t k) {
+      if (alen && k >= *alen) {
+        pp[k] = -1;  // past the active set: no proposal
+        return true;
+      }
+      const int p = propose_flip<false>(g, m, A[k], nullptr);
       if (p == kUndecidedResult) return false;
       decided(k, p);
       return true;
     };
-    auto fast = [=] GDEL_LAMBDA(std::int64_t k) {
-      return past(k) || settle(k, propose_flip<false>(g, m, A[k], nullptr));
-    };
-    // with GDEL_PROPOSE_GATHER=1 (a measurement) the fast pass reads each tet's inputs
-    // gathered by a pass of their own (gather_proposal); the exact forms read the mesh
-    Buffer<ProposalIn, B> gin(ctx_, propose_gather_ ? static_cast<std::size_t>(na) : 0);
-    ProposalIn* gp = gin.data();
-    auto fast_gathered = [=] GDEL_LAMBDA(std::int64_t k) {
-      return past(k) || settle(k, propose_gathered<false>(g, gp[k], nullptr));
-    };
-    // the undecided tets' exact proposals: on integer input a face per thread (part, join)
-    auto part = [=] GDEL_LAMBDA(std::int64_t k, int i, auto work) { return face_proposal(g, m, A[k], i, work); };
-    auto join = [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { decided(k, join_face_proposals(r)); };
-    auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
-      return settle(k, propose_flip<true>(g, m, A[k], work));  // (undecided with work = nullptr: it needs the scratch)
-    };
-    auto propose_all = [&](auto fast_pass) {
-      if (g.int_all && split_exact_) {
-        st_.exact_evaluations += par::fast_then_split(ctx_, na, und.data(), fast_pass, 4, part, join, exact_tally());
-      } else {
-        st_.exact_evaluations +=
-            fast_then_exact(ctx_, g, na, und.data(), fast_pass, exact, exact_tally(), scratch_threads());
-      }
-    };
-    if (propose_gather_) {
-      par::parallel_for(ctx_, na, [=] GDEL_LAMBDA(std::int64_t k) {
-        if (!beyond(k)) gather_proposal(m, A[k], gp[k]);
-      });
-      par::mark(ctx_, "flip: gather proposal inputs");
-      propose_all(fast_gathered);
+    if (g.int_all && split_exact_) {  // the undecided tets' exact proposals a face per thread
+      auto part = [=] GDEL_LAMBDA(std::int64_t k, int i, auto work) {
+        return face_proposal(g, m, A[k], i, work);
+      };
+      auto join = [=] GDEL_LAMBDA(std::int64_t k, const std::int8_t* r) { decided(k, join_face_proposals(r)); };
+      st_.exact_evaluations += par::fast_then_split(ctx_, na, und.data(), fast, 4, part, join, exact_tally());
     } else {
-      propose_all(fast);
+      auto exact = [=] GDEL_LAMBDA(std::int64_t k, auto work) {
+        const int p = propose_flip<true>(g, m, A[k], work);
+        if (p == kUndecidedResult) return false;  // (work = nullptr: it needs the scratch)
+        decided(k, p);
+        return true;
+      };
+      st_.exact_evaluations += fast_then_exact(ctx_, g, na, und.data(), fast, exact, exact_tally(), scratch_threads());
     }
-    gin.release();
     par::mark(ctx_, "flip: propose");
     und.release();
     active_deferred_ = false;
@@ -1912,9 +1872,6 @@ class GFlip3D {
   int spread_block_ = spread_block_setting();
   bool split_exact_ = split_exact_setting();
   bool vote_in_propose_ = vote_in_propose_setting();
-  // GDEL_PROPOSE_GATHER=1 (a measurement, off): a large iteration's fast proposals read
-  // inputs gathered by a pass of their own (flip_kernels.hpp's ProposalIn)
-  bool propose_gather_ = par::knob_on("GDEL_PROPOSE_GATHER");
   enum class DagReset { kAuto, kSparse, kDense };
   static DagReset dag_reset_setting() {
     const std::string v = par::knob_value("GDEL_DAG_RESET");
@@ -1967,10 +1924,9 @@ class GFlip3D {
     return e ? std::clamp(std::atoi(e), 0, 31) : 0;
   }();
   static constexpr std::int64_t kSpaceOrderMinSlots = std::int64_t(1) << 23;
-  // insert_round's scores through par::atomic_raise (GDEL_SCORE_RAISE=1; off until it
-  // has been measured on a GPU: bench/RESULTS.md, session 67)
-  bool score_raise_ = par::knob_on("GDEL_SCORE_RAISE");
-  bool pad_points_ = par::knob_on("GDEL_POINT_PAD");  // pad_points
+  // insert_round's scores through par::atomic_raise (GDEL_SCORE_RAISE=0: every key
+  // through an atomic max, for measurements; bench/RESULTS.md, session 69)
+  bool score_raise_ = !par::knob_off("GDEL_SCORE_RAISE");
   // auto's switch from stream to space order: at 10^8 points stream order ran 6.34 s
   // where space order ran 5.97 (at 10^7, whose meshes stay below 2^27 slots, it was
   // 16-20 ms faster; bench/RESULTS.md, session 65); with the switch 5.958 s against
@@ -2008,7 +1964,6 @@ class GFlip3D {
   // [0] proposers, [1] accepted flips, [2] 2-3 flips among them, [3] the exact
   // evaluations of the flip loop (flushed into Stats at its end).
   Buffer<std::int64_t, B> counts_;
-  Buffer<double, B> xyz4_;  // pad_points' copy (empty: none)
   std::int64_t tally_seen_ = 0;  // counts_[3] at the last read
   bool active_deferred_ = false;  // active_'s length is counts_[4], its size a bound (flip_loop)
   std::int64_t exact_seen_ = 0;  // exact items between the last two reads

@@ -636,7 +636,6 @@ class Splayer {
     H.sid.reset(new std::int64_t[np]);
     H.g = g_;
     H.g.xyz = H.xyz.get();
-    H.g.stride = 3;
     H.g.sid = H.sid.get();
     if (g_.w) {
       H.w.reset(new double[np]);

@@ -274,16 +274,9 @@ inline void knob_same_output_cases(Backend b, std::size_t n, const char* knob, c
 // (GDEL_FLIP_LOG_RECORDS), i.e. a relocation after almost every flip iteration.
 inline void gflip_log_flush_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_FLIP_LOG_RECORDS", "16"); }
 
-// the insertion's scores through par::atomic_raise (the same keys as through atomic_max)
-inline void gflip_score_raise_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_SCORE_RAISE", "1"); }
-
-// the rounds' points read from a copy padded to 32 bytes a point (the same values)
-inline void gflip_point_pad_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_POINT_PAD", "1"); }
-
-// the large iterations' fast proposals from inputs gathered by a pass of their own
-inline void gflip_propose_gather_cases(Backend b, std::size_t n) {
-  knob_same_output_cases(b, n, "GDEL_PROPOSE_GATHER", "1");
-}
+// the insertion's scores through an atomic max on every key (GDEL_SCORE_RAISE=0), not
+// par::atomic_raise (the default): the same keys
+inline void gflip_score_raise_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_SCORE_RAISE", "0"); }
 
 // A small flip iteration (at most GDEL_TEAM_MAX active tets) runs in two teams, its
 // proposals made in the first team or spread over the device beforehand
