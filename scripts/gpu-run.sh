@@ -122,6 +122,10 @@ bench_old() {
 # default): bench_noraise NAME LIMIT ARGS
 bench_noraise() { GDEL_SCORE_RAISE=0 bench "$@"; }
 
+# bench with the flip DAG's links stamped, never zeroed (session 69's study):
+# bench_stamp NAME LIMIT ARGS
+bench_stamp() { GDEL_DAG_RESET=stamp bench "$@"; }
+
 # old / new binary alternating, ROUNDS times (default 2), on the same arguments, both in
 # the JSON: alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
 alternate() {
@@ -2087,6 +2091,15 @@ for (_, r, s), n in zip(items, names):
     step gpu_gflip3d_knobs 120 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
     gpu_tests gpu_parallel
     e8 s69a_1e8
+    ;;
+  s69b)  # session 69, for session 70: the flip DAG's links stamped (GDEL_DAG_RESET=stamp: no zeroing of aux_key_ before a relocation, no reset after it) against the default, uniform 10^7 x3 and 10^6 x2; the step profiles of both at 10^7; gpu_gflip3d's knob tests (DagStampChangesNothing); uniform 10^8 with both; then every GPU test
+    ab s69b 3 2 bench bench_stamp
+    GDEL_PROFILE=1 bench s69b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_DAG_RESET=stamp bench s69b_e7p_stamp 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    step gpu_gflip3d_knobs 150 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
+    e8 s69b_1e8
+    GDEL_DAG_RESET=stamp e8 s69b_1e8_stamp
+    all_gpu_tests
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

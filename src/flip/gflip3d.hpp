@@ -383,7 +383,8 @@ class GFlip3D {
   // Per-tet auxiliary arrays follow the mesh capacity (exactly: no growth slack of
   // their own). Each is at its reset value between steps:
   //   aux_key_  0 — insertion: a tet's best point key; relocation: 1 + the first logged
-  //             flip that consumed the slot (flip DAG); flipping: the vote,
+  //             flip that consumed the slot (flip DAG; GDEL_DAG_RESET=stamp: dag_stamp() |
+  //             that, left in place as stale values); flipping: the vote,
   //             vote_stamp() | INT_MAX - smallest proposer (atomic max), then
   //             flip_stamp() | index of the flip that took the tet (stale stamps never
   //             match a later iteration; clear_marks() zeroes them before the other uses)
@@ -401,17 +402,22 @@ class GFlip3D {
     grow(aux_key_, std::uint64_t(0));
     grow(aux_pick_, std::int32_t(-1));
   }
-  // aux_key_'s high word in flip iteration i (st_.flip_iterations): its votes 2 i + 1,
-  // its flips' stamps 2 i + 2, each above every earlier one and above 0 (clear_marks).
-  std::uint64_t vote_stamp() const {
-    return (2 * static_cast<std::uint64_t>(st_.flip_iterations & 0x3fffffff) + 1) << 32;
+  // aux_key_'s high word in flip iteration i (st_.flip_iterations): the flip DAG's links
+  // of a relocation made while i is the iteration count 4 i + 1 (GDEL_DAG_RESET=stamp:
+  // relocate_through_dag), its votes 4 i + 2, its flips' stamps 4 i + 3; each vote stamp
+  // above every earlier value and all of them above 0 (clear_marks).
+  static std::uint64_t high_word(std::int64_t i, int use) {
+    return (4 * static_cast<std::uint64_t>(i & 0x3fffffff) + static_cast<std::uint64_t>(use)) << 32;
   }
-  std::uint64_t flip_stamp() const { return vote_stamp() + (std::uint64_t(1) << 32); }
+  std::uint64_t dag_stamp() const { return high_word(st_.flip_iterations, 1); }
+  std::uint64_t vote_stamp() const { return high_word(st_.flip_iterations, 2); }
+  std::uint64_t flip_stamp() const { return high_word(st_.flip_iterations, 3); }
   // Zeroes aux_key_ after votes or flips stamped it (before insertion or relocation reads it).
   void clear_marks() {
     if (!marks_dirty_) return;
     aux_key_.memset(0);
     marks_dirty_ = false;
+    dag_stamp_used_ = 0;
   }
   mesh::SlotSource claim(std::int64_t k) {
     mesh::SlotSource src = mesh_.claim(k);
@@ -1792,8 +1798,27 @@ class GFlip3D {
     if (nrec == 0) return;
     if (nrec > INT_MAX) throw Error("gflip3d: flip log of over 2^31 records");
     grow_aux();
-    clear_marks();
-    std::uint64_t* next = aux_key_.data();  // 1 + flip, 0: none
+    // The links: stamp | 1 + the flip, read as none unless the high word is the stamp's.
+    // Stamp 0 (the default) wants aux_key_ zeroed first and left so (the reset below);
+    // with GDEL_DAG_RESET=stamp (a measurement) the links carry dag_stamp(), which no
+    // earlier value in aux_key_ has (a stamp already used since the last clear_marks:
+    // zeroed first), and stay as stale values below the next iteration's votes.
+    const bool stamped = dag_reset_ == DagReset::kStamp;
+    std::uint64_t dstamp = 0;
+    if (stamped) {
+      dstamp = dag_stamp();
+      if (dag_stamp_used_ == dstamp) {
+        marks_dirty_ = true;
+        clear_marks();
+      }
+    } else {
+      clear_marks();
+    }
+    std::uint64_t* next = aux_key_.data();
+    auto link = [=] GDEL_LAMBDA(tid_t t) -> std::int64_t {  // the next flip consuming t, -1: none
+      const std::uint64_t v = next[t];
+      return (v & ~std::uint64_t(0xffffffffu)) == dstamp ? static_cast<std::int64_t>(v & 0xffffffffu) - 1 : -1;
+    };
     FlipRec* rec = log_.data();
     // backwards: outputs point at the next flip consuming their slot (or ~slot)
     for (std::size_t it = log_iters_.size() - 1; it > 0; --it) {
@@ -1803,11 +1828,11 @@ class GFlip3D {
         FlipRec& r = rec[f];
         for (int o = 0; o < 3; ++o) {
           if (r.out[o] < 0) continue;  // no third output (3-2): never followed
-          const std::int64_t nf = static_cast<std::int64_t>(next[r.out[o]]) - 1;
+          const std::int64_t nf = link(r.out[o]);
           r.out[o] = static_cast<tid_t>(nf >= 0 ? nf : ~std::int64_t(r.out[o]));
         }
         for (int o = 0; o < 3; ++o)
-          if (r.in[o] >= 0) next[r.in[o]] = static_cast<std::uint64_t>(f + 1);
+          if (r.in[o] >= 0) next[r.in[o]] = dstamp | static_cast<std::uint64_t>(f + 1);
       });
     }
     const vid_t* U = todo_.data();
@@ -1816,7 +1841,7 @@ class GFlip3D {
     const Geo g = geo();
     auto walk = [=] GDEL_LAMBDA(std::int64_t i, double* work, bool exact) -> bool {
       const vid_t q = U[i];
-      std::int64_t node = static_cast<std::int64_t>(next[vt[q]]) - 1;
+      std::int64_t node = link(vt[q]);
       if (node < 0) return true;
       while (node >= 0) {
         int c = exact ? dag_child<true>(g, rec[node], q, work) : dag_child<false>(g, rec[node], q, work);
@@ -1836,7 +1861,10 @@ class GFlip3D {
     // record, each a 32-byte sector; GDEL_DAG_RESET=sparse/dense for measurements,
     // bench/RESULTS.md, session 57)
     const std::int64_t cap = static_cast<std::int64_t>(aux_key_.size());
-    if (dag_reset_ == DagReset::kDense || (dag_reset_ == DagReset::kAuto && 12 * nrec > cap)) {
+    if (stamped) {
+      marks_dirty_ = true;  // the links stay (stale below every later vote; zeroed before an insertion)
+      dag_stamp_used_ = dstamp;
+    } else if (dag_reset_ == DagReset::kDense || (dag_reset_ == DagReset::kAuto && 12 * nrec > cap)) {
       aux_key_.memset(0);
     } else {
       par::parallel_for(ctx_, nrec, [=] GDEL_LAMBDA(std::int64_t f) {
@@ -1872,12 +1900,16 @@ class GFlip3D {
   int spread_block_ = spread_block_setting();
   bool split_exact_ = split_exact_setting();
   bool vote_in_propose_ = vote_in_propose_setting();
-  enum class DagReset { kAuto, kSparse, kDense };
+  enum class DagReset { kAuto, kSparse, kDense, kStamp };
   static DagReset dag_reset_setting() {
     const std::string v = par::knob_value("GDEL_DAG_RESET");
-    return v == "sparse" ? DagReset::kSparse : v == "dense" ? DagReset::kDense : DagReset::kAuto;
+    return v == "sparse"  ? DagReset::kSparse
+           : v == "dense" ? DagReset::kDense
+           : v == "stamp" ? DagReset::kStamp
+                          : DagReset::kAuto;
   }
   DagReset dag_reset_ = dag_reset_setting();
+  std::uint64_t dag_stamp_used_ = 0;  // the last relocation's dag_stamp() since clear_marks (stamped links)
   // The tet sort moves the arrays by a gather (TetMesh::reorder) where its bytes fit, by a
   // scatter otherwise; GDEL_REORDER_GATHER=0: always the scatter (measurements). The
   // gather took "tet reordering" 82.9 -> 75.9 ms at 10^7 on an H100, faster in each of

@@ -274,6 +274,16 @@ inline void knob_same_output_cases(Backend b, std::size_t n, const char* knob, c
 // (GDEL_FLIP_LOG_RECORDS), i.e. a relocation after almost every flip iteration.
 inline void gflip_log_flush_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_FLIP_LOG_RECORDS", "16"); }
 
+// the flip DAG's links stamped (GDEL_DAG_RESET=stamp: no zeroing before or after a
+// relocation), with the default log and with a log of 16 records (a relocation after
+// almost every flip iteration, and inside them: several with one iteration count)
+inline void gflip_dag_stamp_cases(Backend b, std::size_t n) {
+  knob_same_output_cases(b, n, "GDEL_DAG_RESET", "stamp");
+  ::setenv("GDEL_FLIP_LOG_RECORDS", "16", 1);
+  knob_same_output_cases(b, n / 4, "GDEL_DAG_RESET", "stamp");
+  ::unsetenv("GDEL_FLIP_LOG_RECORDS");
+}
+
 // the insertion's scores through an atomic max on every key (GDEL_SCORE_RAISE=0), not
 // par::atomic_raise (the default): the same keys
 inline void gflip_score_raise_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_SCORE_RAISE", "0"); }
