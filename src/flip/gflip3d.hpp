@@ -1771,7 +1771,8 @@ class GFlip3D {
       carry_.resize(par::copy_if(ctx_, mp, carry_.data(), carry_.size(), [=] GDEL_LAMBDA(tid_t x) { return x >= 0; }));
     }
     // per-tet auxiliary state is all at its reset value between rounds, but for stale
-    // flip stamps, which never match a later iteration (insert_round clears them)
+    // flip stamps and (GDEL_DAG_RESET=stamp) DAG links, which never match a later
+    // iteration (insert_round clears them)
     if (!shrink) grow_aux();
     par::mark(ctx_, "tet reordering");
     return true;
