@@ -1804,17 +1804,10 @@ class GFlip3D {
     // with GDEL_DAG_RESET=stamp (a measurement) the links carry dag_stamp(), which no
     // earlier value in aux_key_ has (a stamp already used since the last clear_marks:
     // zeroed first), and stay as stale values below the next iteration's votes.
+    // (dag_stamp_used_ is set only with marks_dirty_, and both are reset by clear_marks)
     const bool stamped = dag_reset_ == DagReset::kStamp;
-    std::uint64_t dstamp = 0;
-    if (stamped) {
-      dstamp = dag_stamp();
-      if (dag_stamp_used_ == dstamp) {
-        marks_dirty_ = true;
-        clear_marks();
-      }
-    } else {
-      clear_marks();
-    }
+    const std::uint64_t dstamp = stamped ? dag_stamp() : 0;
+    if (!stamped || dag_stamp_used_ == dstamp) clear_marks();
     std::uint64_t* next = aux_key_.data();
     auto link = [=] GDEL_LAMBDA(tid_t t) -> std::int64_t {  // the next flip consuming t, -1: none
       const std::uint64_t v = next[t];
