@@ -383,8 +383,9 @@ class GFlip3D {
   // Per-tet auxiliary arrays follow the mesh capacity (exactly: no growth slack of
   // their own). Each is at its reset value between steps:
   //   aux_key_  0 — insertion: a tet's best point key; relocation: 1 + the first logged
-  //             flip that consumed the slot (flip DAG; GDEL_DAG_RESET=stamp: dag_stamp() |
-  //             that, left in place as stale values); flipping: the vote,
+  //             flip that consumed the slot (flip DAG; by default dag_stamp() | that,
+  //             left in place as stale values; GDEL_DAG_RESET=zero|sparse|dense: no
+  //             stamp, zeroed after the walk); flipping: the vote,
   //             vote_stamp() | INT_MAX - smallest proposer (atomic max), then
   //             flip_stamp() | index of the flip that took the tet (stale stamps never
   //             match a later iteration; clear_marks() zeroes them before the other uses)
@@ -403,7 +404,7 @@ class GFlip3D {
     grow(aux_pick_, std::int32_t(-1));
   }
   // aux_key_'s high word in flip iteration i (st_.flip_iterations): the flip DAG's links
-  // of a relocation made while i is the iteration count 4 i + 1 (GDEL_DAG_RESET=stamp:
+  // of a relocation made while i is the iteration count 4 i + 1 (the default:
   // relocate_through_dag), its votes 4 i + 2, its flips' stamps 4 i + 3; each vote stamp
   // above every earlier value and all of them above 0 (clear_marks).
   static std::uint64_t high_word(std::int64_t i, int use) {
@@ -1771,7 +1772,7 @@ class GFlip3D {
       carry_.resize(par::copy_if(ctx_, mp, carry_.data(), carry_.size(), [=] GDEL_LAMBDA(tid_t x) { return x >= 0; }));
     }
     // per-tet auxiliary state is all at its reset value between rounds, but for stale
-    // flip stamps and (GDEL_DAG_RESET=stamp) DAG links, which never match a later
+    // flip stamps and (by default) DAG links, which never match a later
     // iteration (insert_round clears them)
     if (!shrink) grow_aux();
     par::mark(ctx_, "tet reordering");
@@ -1800,10 +1801,10 @@ class GFlip3D {
     if (nrec > INT_MAX) throw Error("gflip3d: flip log of over 2^31 records");
     grow_aux();
     // The links: stamp | 1 + the flip, read as none unless the high word is the stamp's.
-    // Stamp 0 (the default) wants aux_key_ zeroed first and left so (the reset below);
-    // with GDEL_DAG_RESET=stamp (a measurement) the links carry dag_stamp(), which no
-    // earlier value in aux_key_ has (a stamp already used since the last clear_marks:
-    // zeroed first), and stay as stale values below the next iteration's votes.
+    // By default the links carry dag_stamp(), which no earlier value in aux_key_ has (a
+    // stamp already used since the last clear_marks: zeroed first), and stay as stale
+    // values below the next iteration's votes. Stamp 0 (GDEL_DAG_RESET=zero|sparse|dense,
+    // for measurements) wants aux_key_ zeroed first and left so (the reset below).
     // (dag_stamp_used_ is set only with marks_dirty_, and both are reset by clear_marks)
     const bool stamped = dag_reset_ == DagReset::kStamp;
     const std::uint64_t dstamp = stamped ? dag_stamp() : 0;
@@ -1850,15 +1851,15 @@ class GFlip3D {
         ctx_, g, u, und.data(), [=] GDEL_LAMBDA(std::int64_t i) { return walk(i, nullptr, false); },
         [=] GDEL_LAMBDA(std::int64_t i, double* work) { return walk(i, work, true); });
     par::mark(ctx_, "relocate: DAG walk");
-    // next[] back to 0: where the log is long against the mesh, all of it (one sequential
-    // write of 8 bytes a slot) rather than the consumed slots (up to three random writes a
-    // record, each a 32-byte sector; GDEL_DAG_RESET=sparse/dense for measurements,
-    // bench/RESULTS.md, session 57)
+    // Stamped: nothing to reset. Otherwise next[] back to 0: where the log is long against
+    // the mesh, all of it (one sequential write of 8 bytes a slot) rather than the consumed
+    // slots (up to three random writes a record, each a 32-byte sector;
+    // GDEL_DAG_RESET=sparse/dense, bench/RESULTS.md, session 57)
     const std::int64_t cap = static_cast<std::int64_t>(aux_key_.size());
     if (stamped) {
       marks_dirty_ = true;  // the links stay (stale below every later vote; zeroed before an insertion)
       dag_stamp_used_ = dstamp;
-    } else if (dag_reset_ == DagReset::kDense || (dag_reset_ == DagReset::kAuto && 12 * nrec > cap)) {
+    } else if (dag_reset_ == DagReset::kDense || (dag_reset_ == DagReset::kZero && 12 * nrec > cap)) {
       aux_key_.memset(0);
     } else {
       par::parallel_for(ctx_, nrec, [=] GDEL_LAMBDA(std::int64_t f) {
@@ -1894,13 +1895,15 @@ class GFlip3D {
   int spread_block_ = spread_block_setting();
   bool split_exact_ = split_exact_setting();
   bool vote_in_propose_ = vote_in_propose_setting();
-  enum class DagReset { kAuto, kSparse, kDense, kStamp };
+  // kStamp, the default: stamped links, never zeroed (session 70); the others zero them
+  // after each walk (GDEL_DAG_RESET=zero: by the log's size, sparse or dense; for measurements)
+  enum class DagReset { kZero, kSparse, kDense, kStamp };
   static DagReset dag_reset_setting() {
     const std::string v = par::knob_value("GDEL_DAG_RESET");
-    return v == "sparse"  ? DagReset::kSparse
-           : v == "dense" ? DagReset::kDense
-           : v == "stamp" ? DagReset::kStamp
-                          : DagReset::kAuto;
+    return v == "zero"     ? DagReset::kZero
+           : v == "sparse" ? DagReset::kSparse
+           : v == "dense"  ? DagReset::kDense
+                           : DagReset::kStamp;
   }
   DagReset dag_reset_ = dag_reset_setting();
   std::uint64_t dag_stamp_used_ = 0;  // the last relocation's dag_stamp() since clear_marks (stamped links)

@@ -274,13 +274,14 @@ inline void knob_same_output_cases(Backend b, std::size_t n, const char* knob, c
 // (GDEL_FLIP_LOG_RECORDS), i.e. a relocation after almost every flip iteration.
 inline void gflip_log_flush_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_FLIP_LOG_RECORDS", "16"); }
 
-// the flip DAG's links stamped (GDEL_DAG_RESET=stamp: no zeroing before or after a
-// relocation), with the default log and with a log of 16 records (a relocation after
-// almost every flip iteration, and inside them: several with one iteration count)
+// the flip DAG's links stamped (the default: no zeroing before or after a relocation)
+// against links zeroed after each walk (GDEL_DAG_RESET=zero), with the default log and
+// with a log of 16 records (a relocation after almost every flip iteration, and inside
+// them: several with one iteration count)
 inline void gflip_dag_stamp_cases(Backend b, std::size_t n) {
-  knob_same_output_cases(b, n, "GDEL_DAG_RESET", "stamp");
+  knob_same_output_cases(b, n, "GDEL_DAG_RESET", "zero");
   ::setenv("GDEL_FLIP_LOG_RECORDS", "16", 1);
-  knob_same_output_cases(b, n / 4, "GDEL_DAG_RESET", "stamp");
+  knob_same_output_cases(b, n / 4, "GDEL_DAG_RESET", "zero");
   ::unsetenv("GDEL_FLIP_LOG_RECORDS");
 }
 
