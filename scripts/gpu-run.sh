@@ -2122,14 +2122,15 @@ for (_, r, s), n in zip(items, names):
     GDEL_FLIP_LOG_RECORDS=100000000 e8 s70a_1e8_log100
     all_gpu_tests
     ;;
-  s70b)  # session 70, plan s70a cut to the device time left (≈ 400 s): the default (stamped links) against GDEL_DAG_RESET=zero and the flip log's cap at 10, 20, 40 million records, uniform 10^7 x2 alternating; the step profiles (with the trace) of the default and 20 million; gpu_gflip3d's knob tests; every GPU test; uniform 10^8 at 50 (the default) and 100 million records if time is left
+  s70b)  # session 70, plan s70a cut to the device time left (≈ 400 s): the default (stamped links) against GDEL_DAG_RESET=zero and the flip log's cap at 10, 20, 40 million records, uniform 10^7 x2 alternating; the step profiles (with the trace) of the default and 20 million; gpu_gflip3d's knob tests; every GPU test but gpu_gflip3d; uniform 10^8 at 50 (the default) and 100 million records; gpu_gflip3d if time is left
     ab s70b 2 0 bench bench_zero bench_log10 bench_log20 bench_log40
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s70b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench_log20 s70b_e7p_log20 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     step gpu_gflip3d_knobs 150 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
-    gpu_tests gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_gflip3d
+    gpu_tests gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh
     e8 s70b_1e8
     GDEL_FLIP_LOG_RECORDS=100000000 e8 s70b_1e8_log100
+    gpu_tests gpu_gflip3d
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
