@@ -130,12 +130,12 @@ bench_stamp() { GDEL_DAG_RESET=stamp bench "$@"; }
 # bench_zero NAME LIMIT ARGS
 bench_zero() { GDEL_DAG_RESET=zero bench "$@"; }
 
-# bench_stamp with the flip log capped at 10, 20 or 40 million records (GDEL_FLIP_LOG_RECORDS;
-# the default cap is half a record a point, 5 million at uniform 10^7; session 70's study):
-# bench_logNN NAME LIMIT ARGS
-bench_log10() { GDEL_FLIP_LOG_RECORDS=10000000 bench_stamp "$@"; }
-bench_log20() { GDEL_FLIP_LOG_RECORDS=20000000 bench_stamp "$@"; }
-bench_log40() { GDEL_FLIP_LOG_RECORDS=40000000 bench_stamp "$@"; }
+# bench with the flip log capped at 10, 20 or 40 million records (GDEL_FLIP_LOG_RECORDS;
+# the default cap is half a record a point, 5 million at uniform 10^7; session 70's study,
+# on binaries whose default is the stamped links): bench_logNN NAME LIMIT ARGS
+bench_log10() { GDEL_FLIP_LOG_RECORDS=10000000 bench "$@"; }
+bench_log20() { GDEL_FLIP_LOG_RECORDS=20000000 bench "$@"; }
+bench_log40() { GDEL_FLIP_LOG_RECORDS=40000000 bench "$@"; }
 
 # old / new binary alternating, ROUNDS times (default 2), on the same arguments, both in
 # the JSON: alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
@@ -2112,25 +2112,18 @@ for (_, r, s), n in zip(items, names):
     GDEL_DAG_RESET=stamp e8 s69b_1e8_stamp
     all_gpu_tests
     ;;
-  s70a)  # session 70: the build with the stamped DAG links by default against itself with them zeroed (GDEL_DAG_RESET=zero), and the flip log's cap at 5 (the default at 10^7), 10, 20, 40 million records, uniform 10^7 x3 alternating, 10^6 x2 (default, zero); the step profiles (with the trace) of 5 and 20 million; gpu_gflip3d's knob tests; uniform 10^8 at 50 (the default) and 100 million records; then every GPU test
+  s70a)  # session 70: the build with the stamped DAG links by default against itself with them zeroed (GDEL_DAG_RESET=zero), and the flip log's cap at 5 (the default at 10^7), 10, 20, 40 million records, uniform 10^7 x3 alternating; the step profiles (with the trace) of 5 and 20 million; gpu_gflip3d's knob tests; every GPU test but gpu_gflip3d; uniform 10^8 at 50 (the default) and 100 million records; gpu_gflip3d; 10^6 x2 (default, zero); gpu_parallel, gpu_predicates. The steps in order of need: a smaller GDEL_CALL_BUDGET cuts the last ones (the whole plan ≈ 520 s; ≈ 260 s reaches the 10^8 runs)
     ab s70a 3 0 bench bench_zero bench_log10 bench_log20 bench_log40
-    ab s70a 0 2 bench bench_zero
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s70a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench_log20 s70a_e7p_log20 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     step gpu_gflip3d_knobs 150 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
+    gpu_tests gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh
     e8 s70a_1e8
     GDEL_FLIP_LOG_RECORDS=100000000 e8 s70a_1e8_log100
-    all_gpu_tests
-    ;;
-  s70b)  # session 70, plan s70a cut to the device time left (≈ 400 s): the default (stamped links) against GDEL_DAG_RESET=zero and the flip log's cap at 10, 20, 40 million records, uniform 10^7 x2 alternating; the step profiles (with the trace) of the default and 20 million; gpu_gflip3d's knob tests; every GPU test but gpu_gflip3d; uniform 10^8 at 50 (the default) and 100 million records; gpu_gflip3d if time is left
-    ab s70b 2 0 bench bench_zero bench_log10 bench_log20 bench_log40
-    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s70b_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench_log20 s70b_e7p_log20 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
-    step gpu_gflip3d_knobs 150 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
-    gpu_tests gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh
-    e8 s70b_1e8
-    GDEL_FLIP_LOG_RECORDS=100000000 e8 s70b_1e8_log100
     gpu_tests gpu_gflip3d
+    ab s70a 0 2 bench bench_zero
+    gpu_tests gpu_parallel
+    step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
