@@ -137,6 +137,10 @@ bench_log10() { GDEL_FLIP_LOG_RECORDS=10000000 bench "$@"; }
 bench_log20() { GDEL_FLIP_LOG_RECORDS=20000000 bench "$@"; }
 bench_log40() { GDEL_FLIP_LOG_RECORDS=40000000 bench "$@"; }
 
+# bench with runs of small flip iterations in one team (GDEL_TEAM_LOOP=1, session 71's
+# study): bench_loop NAME LIMIT ARGS
+bench_loop() { GDEL_TEAM_LOOP=1 bench "$@"; }
+
 # old / new binary alternating, ROUNDS times (default 2), on the same arguments, both in
 # the JSON: alternate TAG ARGS... (gdel-bench-old beside gdel-bench in the binaries' folder)
 alternate() {
@@ -2123,6 +2127,21 @@ for (_, r, s), n in zip(items, names):
     gpu_tests gpu_gflip3d
     ab s70a 0 2 bench bench_zero
     gpu_tests gpu_parallel
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    ;;
+  s71a)  # session 71: the team flip loop (GDEL_TEAM_LOOP=1) against the host's iterations (the default) at 10^6 (uniform, grid, sphere; x2) and uniform 10^7 (x3), alternating; the knob tests (TeamLoopChangesNothing, the small iterations' paths, the stamped links, the log's flushes); profiles with the flip trace of both at 10^7 and of sphere 10^6; every other GPU test; uniform 10^8 default and loop; the flip log's cap at 20 million records x2 (session 70's study). The steps in order of need (the whole plan ≈ 560 s; ≈ 330 s reaches the GPU tests)
+    ab s71a 0 2 bench bench_loop
+    ab s71a 3 0 bench bench_loop
+    step gpu_gflip3d_knobs 200 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*:*SmallIteration*'
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench s71a_e7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 GDEL_FLIP_TRACE=1 bench_loop s71a_e7p_loop 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s71a_e6p 60 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench_loop s71a_e6p_loop 60 --dist sphere --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    gpu_tests gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh
+    e8 s71a_1e8
+    GDEL_TEAM_LOOP=1 e8 s71a_1e8_loop
+    ab s71a 2 0 bench_log20
+    gpu_tests gpu_gflip3d gpu_parallel
     step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
   cmd)

@@ -137,6 +137,201 @@ std::int64_t fast_then_exact(Context<B>& ctx, const Geo& g, std::int64_t n, std:
                                      tally, max_threads);
 }
 
+// The steps of one flip iteration, each written once for the three ways they run: as
+// device-wide passes (GFlip3D::commit_flips on a large active set), in one team (a small
+// one), and in the team flip loop (GFlip3D::team_flip_loop: many small iterations in one
+// launch).
+//
+// The decision: A (the active set) proposed pp[k] (propose_flip's codes, < 0: none);
+// the proposers are listed in pl (positions in A); each casts its vote (the smallest
+// proposer wins each tet: cast_vote with the iteration's vote stamp), and a proposer is
+// accepted when it won every tet of its flip, so the accepted flips are disjoint. With
+// keep_stuck a stuck tet (kStuckResult) is a proposer that never votes and is never
+// accepted: it stays active (GFlip3D::commit_flips).
+struct FlipVote {
+  MeshView m;
+  const tid_t* A;
+  const std::int32_t* pp;
+  std::int32_t* pl;
+  std::uint64_t* vote;
+  std::uint64_t vstamp;
+  bool keep_stuck;
+  GDEL_HD bool is_proposer(std::int64_t k) const { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); }
+  GDEL_HD void vote_of(std::int64_t j) const {  // j: a position in the proposer list
+    const std::int64_t k = pl[j];
+    if (pp[k] >= 0) cast_vote(m, A[k], pp[k], vote, vstamp);  // (a stuck tet does not vote)
+  }
+  GDEL_HD bool accepted(std::int64_t j) const {  // after the votes (a stuck tet: never)
+    const std::int64_t k = pl[j];
+    tid_t ts[3];
+    const int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
+    bool ok = nt > 0;
+    for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == vote_value(vstamp, A[k]);
+    return ok;
+  }
+  // In a team, over A[0, na): the proposers to pl, the votes, the accepted flips to fl
+  // (positions in pl) with their 2-3 offsets to o23 (o23[nf]: the 2-3 count), in index
+  // order. Returns the proposers, the accepted flips and the 2-3 flips among them (to
+  // every thread), all written and visible on return. Collective.
+  struct Counts {
+    std::int64_t np, nf, n23;
+  };
+  GDEL_HD Counts team(const par::Team& tm, std::int64_t na, std::int32_t* fl, std::int32_t* o23) const {
+    const std::int64_t np = par::team_select(tm, na, pl, [this](std::int64_t k) { return is_proposer(k); });
+    for (std::int64_t j = tm.rank(); j < np; j += tm.size()) vote_of(j);
+    tm.sync();
+    // accepted flips and the 2-3 flips among them, counted by one sum (high and low
+    // words: both below 2^31)
+    std::int64_t nf = 0, n2 = 0;
+    for (std::int64_t j0 = 0; j0 < np; j0 += tm.size()) {
+      const std::int64_t j = j0 + tm.rank();
+      bool ok = false;
+      bool is23 = false;
+      if (j < np) {
+        ok = accepted(j);
+        is23 = ok && prop_type(pp[pl[j]]) == 1;
+      }
+      std::int64_t total = 0;
+      const std::int64_t at = tm.exclusive_sum((ok ? std::int64_t(1) << 32 : std::int64_t(0)) | (is23 ? 1 : 0), &total);
+      if (ok) {
+        fl[nf + (at >> 32)] = static_cast<std::int32_t>(j);
+        o23[nf + (at >> 32)] = static_cast<std::int32_t>(n2 + (at & 0xffffffff));
+      }
+      nf += total >> 32;
+      n2 += total & 0xffffffff;
+    }
+    if (tm.rank() == 0) o23[nf] = static_cast<std::int32_t>(n2);
+    tm.sync();
+    return {np, nf, n2};
+  }
+};
+
+// Small active sets' proposals in a team: A[k] for k < live, one thread per tet (fast,
+// then exact: propose_flip_in_thread, the exact ones counted into *tally), -1 for
+// live <= k < na. work: the team's scratch (a slice per rank), or nullptr where every
+// evaluation runs in the integer stage. Collective.
+GDEL_HD inline void team_propose(const par::Team& tm, const Geo& g, const MeshView& m, const tid_t* A,
+                                 std::int64_t na, std::int64_t live, std::int32_t* pp, double* work,
+                                 std::int64_t* tally) {
+  double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
+  std::int64_t nex = 0;
+  for (std::int64_t k = tm.rank(); k < na; k += tm.size()) pp[k] = k < live ? propose_flip_in_thread(g, m, A[k], w, nex) : -1;
+  if (nex) par::atomic_add(tally, nex);
+  tm.sync();
+}
+
+// The commit of the accepted flips (ExecuteFlip xf: their records, slots and new tets)
+// that follows: the adjacency across their external faces (link), the 3-2 flips' third
+// slots freed (free_third, onto the stack at ftop), and the next active set's
+// candidates (candidate: the rejected proposers that no flip took, the flips' new tets).
+struct FlipCommit {
+  ExecuteFlip xf;
+  const std::int32_t* pl;  // the proposer list (positions in xf.A)
+  std::int64_t np;
+  tid_t* ftop;
+  vid_t inf;
+  int vshift;
+  // adjacency across external face e (6 a flip): a neighbour that no flip took links
+  // back to the new tet, across its face that named the old tet (the entry rewritten,
+  // that face's flag is cleared with it: left set, it made the neighbour skip the face
+  // where it proposes, and the grid's 10^6 points took 566 flip iterations instead of
+  // 405, bench/RESULTS.md, session 61); one that flip h took is replaced by h's new tet
+  // there.
+  GDEL_HD void link(std::int64_t e) const {
+    const tid_t* et = xf.ext.eot;
+    const std::uint16_t* ec = xf.ext.code;
+    const FlipRec* rec = xf.rec;
+    const tid_t u = et[e];
+    if (u < 0) return;  // the hull: the new tet already says so
+    const std::uint16_t c = ec[e];
+    const tid_t old = rec[e / 6].in[ext_old_tet(c)];
+    const tid_t mine = rec[e / 6].out[ext_new_tet(c)];
+    const std::uint64_t mk = xf.mark[u];
+    if ((mk & ~std::uint64_t(0xffffffff)) == xf.stamp) {  // u was taken by flip h of this iteration
+      const std::int64_t h = static_cast<std::int64_t>(mk & 0xffffffff);
+      // h's entry for u's face towards the old tet (the one face u and it share)
+      int k = 0;
+      while (k < 5 && !(et[6 * h + k] == old && rec[h].in[ext_old_tet(ec[6 * h + k])] == u)) ++k;
+      xf.m.nraw[4 * std::int64_t(mine) + ext_new_face(c)] = rec[h].out[ext_new_tet(ec[6 * h + k])];
+    } else {
+      // (other entries may rewrite u's other entries meanwhile: MeshView::nb_face)
+      par::atomic_store(&xf.m.nraw[4 * std::int64_t(u) + xf.m.nb_face<true>(u, old)], mine);
+    }
+  }
+  // a 3-2 flip's third slot: dead, and on the free stack (TetMesh::reserve_free)
+  GDEL_HD void free_third(std::int64_t f) const {
+    if (xf.rec[f].type != 2) return;
+    const tid_t t = xf.rec[f].in[2];
+    xf.m.state[t] = 0;
+    ftop[f - xf.o23[f]] = t;
+  }
+  // Candidate c < np is proposer c, kept unless a flip took its tet (stamped by
+  // ExecuteFlip: left to that flip, or freed; an accepted proposer's own flip took it);
+  // c >= np is new tet (c - np) % 3 of flip (c - np) / 3 (-1: none). Each tet is the
+  // candidate of exactly one c.
+  GDEL_HD tid_t candidate(std::int64_t c) const {
+    if (c < np) {
+      const tid_t t = xf.A[pl[c]];
+      return (xf.mark[t] & ~std::uint64_t(0xffffffff)) != xf.stamp ? t : tid_t(-1);
+    }
+    return xf.rec[(c - np) / 3].out[(c - np) % 3];
+  }
+  GDEL_HD void queue(std::int64_t c) const {
+    const tid_t t = candidate(c);
+    if (t >= 0) xf.m.state[t] |= mesh::kQueued;
+  }
+  // the space order's key: the smallest finite vertex (the points are in curve order),
+  // coarsened by vshift, then (space_key) the tet id
+  GDEL_HD std::uint32_t space_vertex(tid_t t) const {
+    return static_cast<std::uint32_t>(smallest_finite_vertex(xf.m.tet[t], inf)) >> vshift;
+  }
+  GDEL_HD std::uint64_t space_key(tid_t t) const {
+    return (static_cast<std::uint64_t>(space_vertex(t)) << 32) | static_cast<std::uint32_t>(t);
+  }
+  // In a team: the nfl flips executed (fast, then exact in the thread: counted into
+  // *tally), linked, their third slots freed; then the next active set. list: its tets
+  // to act (returned: their count), in stream order (the candidates' order; lp is act),
+  // by space_key or by slot (lp: abound of scratch; skp: 2 abound keys in space order);
+  // !list: each marked kQueued (returns 0). Collective; act is visible on return.
+  enum class Order { kStream, kSpace, kSlot };
+  GDEL_HD std::int64_t team(const par::Team& tm, std::int64_t nfl, double* work, std::int64_t* tally, bool list,
+                            Order order, tid_t* lp, tid_t* act, std::uint64_t* skp) const {
+    double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
+    std::int64_t nex = 0;
+    for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) {
+      if (xf.run<false>(f, nullptr)) continue;
+      ++nex;
+      execute_flip_exact(xf, f, w);
+    }
+    if (nex) par::atomic_add(tally, nex);
+    tm.sync();
+    const std::int64_t abound = np + 3 * nfl;
+    for (std::int64_t e = tm.rank(); e < 6 * nfl; e += tm.size()) link(e);
+    for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) free_third(f);
+    if (!list) {
+      for (std::int64_t c = tm.rank(); c < abound; c += tm.size()) queue(c);
+      tm.sync();
+      return 0;
+    }
+    // (the candidates read the flips' stamps and records, written before the sync above)
+    if (order == Order::kStream) lp = act;
+    const std::int64_t k = par::team_select(tm, abound, lp, [this](std::int64_t c) { return candidate(c) >= 0; });
+    for (std::int64_t j = tm.rank(); j < k; j += tm.size()) {
+      lp[j] = candidate(lp[j]);
+      if (order == Order::kSpace) skp[j] = space_key(lp[j]);
+    }
+    tm.sync();
+    if (order == Order::kSpace) {
+      par::team_sort_distinct(tm, skp, k, skp + abound);
+      for (std::int64_t j = tm.rank(); j < k; j += tm.size()) act[j] = static_cast<tid_t>(skp[abound + j] & 0xffffffffu);
+      tm.sync();
+    } else if (order == Order::kSlot) {
+      par::team_sort_distinct(tm, lp, k, act);
+    }  // (in stream order lp is act)
+    return k;
+  }
+};
+
 template <class B>
 class GFlip3D {
  public:
@@ -407,7 +602,7 @@ class GFlip3D {
   // of a relocation made while i is the iteration count 4 i + 1 (the default:
   // relocate_through_dag), its votes 4 i + 2, its flips' stamps 4 i + 3; each vote stamp
   // above every earlier value and all of them above 0 (clear_marks).
-  static std::uint64_t high_word(std::int64_t i, int use) {
+  GDEL_HD static std::uint64_t high_word(std::int64_t i, int use) {
     return (4 * static_cast<std::uint64_t>(i & 0x3fffffff) + static_cast<std::uint64_t>(use)) << 32;
   }
   std::uint64_t dag_stamp() const { return high_word(st_.flip_iterations, 1); }
@@ -934,6 +1129,19 @@ class GFlip3D {
     for (std::int64_t it = 0; it < cfg_.max_flip_iterations; ++it) {
       const std::int64_t na = static_cast<std::int64_t>(active_.size());
       if (na == 0) break;
+      // a run of small iterations in one team (not where the log's cap is below four
+      // teams' flips: it would end most runs; the log is consumed first where a run could
+      // not add a team's flips to it)
+      if (na <= team_max_ && team_loop_on() && (!with_log || log_cap >= 4 * team_max_)) {
+        if (with_log && !log_.empty() && static_cast<std::int64_t>(log_.size()) + team_max_ > log_cap) relocate_through_dag();
+        const TeamLoopResult r = team_flip_loop(na, with_log, cfg_.max_flip_iterations - it);
+        check_mesh("after a team flip loop");
+        if (r.finished) break;
+        if (r.iterations > 0) {
+          it += r.iterations - 1;
+          continue;
+        }
+      }
       if (!flip_iteration(na, with_log)) break;
       check_mesh("after flip iteration");
       if (with_log && static_cast<std::int64_t>(log_.size()) > log_cap) relocate_through_dag();
@@ -1125,7 +1333,6 @@ class GFlip3D {
     // again (bench/RESULTS.md, session 11). Not under the original rule: on cospherical
     // input most facets are stuck ties, re-proposed (exactly, with SoS) every iteration.
     const bool keep_stuck = cfg_.independent_splits;
-    auto is_proposer = [=] GDEL_LAMBDA(std::int64_t k) { return pp[k] >= 0 || (keep_stuck && pp[k] == kStuckResult); };
     // The proposer list (positions in A: na < 2^31, as tets). Over a large active set it
     // is counted first and sized exactly: in a flip loop over every tet (the terminal
     // variant's, or GDEL_FINAL_ALL_TETS) few of them propose, and a list sized by the
@@ -1137,41 +1344,28 @@ class GFlip3D {
     // the proposers, the accepted flips and the 2-3 flips among them come to the host
     // together, one wait instead of three (bench/RESULTS.md, session 19).
     std::int64_t* cn = counts_.data();
-    const std::int64_t npb = na > par::kUncountedListMax
-                                 ? par::count_indices(ctx_, static_cast<std::size_t>(na), is_proposer)
-                                 : na;
+    const FlipVote fv0{m, A, pp, nullptr, nullptr, 0, keep_stuck};
+    const std::int64_t npb =
+        na > par::kUncountedListMax
+            ? par::count_indices(ctx_, static_cast<std::size_t>(na), [=] GDEL_LAMBDA(std::int64_t k) { return fv0.is_proposer(k); })
+            : na;
     if (npb == 0) {
       active_.release();
       return 0;
     }
     Buffer<std::int32_t, B> pl(ctx_, static_cast<std::size_t>(npb));
     std::int32_t* plp = pl.data();
-    std::uint64_t* vote = aux_key_.data();
     marks_dirty_ = true;
-    const std::uint64_t vstamp = vote_stamp();
+    // the votes: an atomic max in aux_key_ of vote_stamp() | INT_MAX - proposer
+    // (flip::cast_vote). The stamp (this iteration's, above every earlier vote and flip
+    // stamp) spares a pass that would reset the votes.
+    const FlipVote fv{m, A, pp, plp, aux_key_.data(), vote_stamp(), keep_stuck};
     Buffer<std::int32_t, B> fl(ctx_, static_cast<std::size_t>(npb));  // positions in pl, then in A
     std::int32_t* flp = fl.data();
     // 2-3 flips: each needs one new slot (o23: their exclusive offsets; cn[2]: how many)
     // (int32: at most np < 2^31 flips)
     Buffer<std::int32_t, B> off23(ctx_, static_cast<std::size_t>(npb + 1));
     std::int32_t* o23 = off23.data();
-    // vote: the smallest proposer wins each tet, by an atomic max in aux_key_ of
-    // vote_stamp() | INT_MAX - proposer (flip::cast_vote); accepted flips are disjoint. The
-    // stamp (this iteration's, above every earlier vote and flip stamp) spares a pass that
-    // would reset the votes. j: a position in the proposer list.
-    auto vote_of = [=] GDEL_LAMBDA(std::int64_t j) {
-      const std::int64_t k = plp[j];
-      if (pp[k] >= 0) cast_vote(m, A[k], pp[k], vote, vstamp);  // (a stuck tet does not vote)
-    };
-    // after the votes: whether proposer j won every tet of its flip (a stuck tet: never)
-    auto accepted = [=] GDEL_LAMBDA(std::int64_t j) {
-      const std::int64_t k = plp[j];
-      tid_t ts[3];
-      const int nt = pp[k] < 0 ? 0 : prop_tets(m, A[k], pp[k], ts);
-      bool ok = nt > 0;
-      for (int l = 0; l < nt; ++l) ok = ok && vote[ts[l]] == vote_value(vstamp, A[k]);
-      return ok;
-    };
     const bool team = na <= team_max_;  // every step of this iteration in one team, or each a pass
     if (team) {
       // One team does what the steps below do, with the same results: the lists come
@@ -1179,56 +1373,25 @@ class GFlip3D {
       // its time (bench/RESULTS.md, session 27: 29 kernels of 1.6-16 us each).
       double* work = propose ? team_work(g) : nullptr;
       par::team_run(ctx_, [=] GDEL_LAMBDA(const par::Team& tm) {
-        if (propose) {  // as flip_iteration's fast and exact passes, in one thread per tet
-          double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
-          const std::int64_t live = alen && *alen < na ? *alen : na;
-          std::int64_t nex = 0;
-          for (std::int64_t k = tm.rank(); k < na; k += tm.size())
-            pp[k] = k < live ? propose_flip_in_thread(g, m, A[k], w, nex) : -1;
-          if (nex) par::atomic_add(cn + 3, nex);
-          tm.sync();
-        }
-        const std::int64_t np = par::team_select(tm, na, plp, is_proposer);
-        for (std::int64_t j = tm.rank(); j < np; j += tm.size()) vote_of(j);
-        tm.sync();
-        // accepted flips and the 2-3 flips among them, counted by one sum (high and low
-        // words: both below 2^31)
-        std::int64_t nf = 0, n2 = 0;
-        for (std::int64_t j0 = 0; j0 < np; j0 += tm.size()) {
-          const std::int64_t j = j0 + tm.rank();
-          bool ok = false;
-          bool is23 = false;
-          if (j < np) {
-            ok = accepted(j);
-            is23 = ok && prop_type(pp[plp[j]]) == 1;
-          }
-          std::int64_t total = 0;
-          const std::int64_t at =
-              tm.exclusive_sum((ok ? std::int64_t(1) << 32 : std::int64_t(0)) | (is23 ? 1 : 0), &total);
-          if (ok) {
-            flp[nf + (at >> 32)] = static_cast<std::int32_t>(j);
-            o23[nf + (at >> 32)] = static_cast<std::int32_t>(n2 + (at & 0xffffffff));
-          }
-          nf += total >> 32;
-          n2 += total & 0xffffffff;
-        }
+        if (propose) team_propose(tm, g, m, A, na, alen && *alen < na ? *alen : na, pp, work, cn + 3);
+        const FlipVote::Counts c = fv.team(tm, na, flp, o23);
         if (tm.rank() == 0) {
-          cn[0] = np;
-          cn[1] = nf;
-          cn[2] = n2;
-          o23[nf] = static_cast<std::int32_t>(n2);
+          cn[0] = c.np;
+          cn[1] = c.nf;
+          cn[2] = c.n23;
         }
       });
       par::mark(ctx_, propose ? "flip: propose + vote (team)" : "flip: vote (team)");
     } else {
-      par::select_indices_to(ctx_, static_cast<std::size_t>(na), plp, cn, is_proposer);
+      par::select_indices_to(ctx_, static_cast<std::size_t>(na), plp, cn,
+                             [=] GDEL_LAMBDA(std::int64_t k) { return fv.is_proposer(k); });
       par::mark(ctx_, "flip: select proposers");
-      if (!voted) par::parallel_for_counted(ctx_, npb, cn, vote_of);
+      if (!voted) par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) { fv.vote_of(j); });
       // (the flags in a pass of their own: with accepted() as the selection's predicate
       // the step took 72 ms instead of 49 at 10^7 points, bench/RESULTS.md, session 57)
       Buffer<std::int8_t, B> acc(ctx_, static_cast<std::size_t>(npb));
       std::int8_t* ap = acc.data();
-      par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) { ap[j] = accepted(j) ? 1 : 0; });
+      par::parallel_for_counted(ctx_, npb, cn, [=] GDEL_LAMBDA(std::int64_t j) { ap[j] = fv.accepted(j) ? 1 : 0; });
       par::select_indices_to(ctx_, static_cast<std::size_t>(npb), flp, cn + 1,
                              [=] GDEL_LAMBDA(std::int64_t j) { return j < cn[0] && ap[j] != 0; });
       par::parallel_for(ctx_, npb + 1, [=] GDEL_LAMBDA(std::int64_t f) {
@@ -1340,64 +1503,23 @@ class GFlip3D {
     const ExecuteFlip xf{m, g, A, flp, pp, rec, src, o23, mark, stamp, ext};
     auto xfast = [=] GDEL_LAMBDA(std::int64_t f) { return xf.template run<false>(f, nullptr); };
     auto xexact = [=] GDEL_LAMBDA(std::int64_t f, auto work) { return xf.template run<true>(f, work); };
-    // adjacency across external faces: a neighbour that no flip took links back to the
-    // new tet, across its face that named the old tet (the entry rewritten, that face's
-    // flag is cleared with it: left set, it made the neighbour skip the face where it
-    // proposes, and the grid's 10^6 points took 566 flip iterations instead of 405,
-    // bench/RESULTS.md, session 61); one that flip h took is replaced by h's new tet there.
-    const std::uint16_t* ec = ext_code.data();
-    const tid_t* et = ext_tet.data();
-    auto link = [=] GDEL_LAMBDA(std::int64_t e) {
-      const tid_t u = et[e];
-      if (u < 0) return;  // the hull: the new tet already says so
-      const std::uint16_t c = ec[e];
-      const tid_t old = rec[e / 6].in[ext_old_tet(c)];
-      const tid_t mine = rec[e / 6].out[ext_new_tet(c)];
-      const std::uint64_t mk = mark[u];
-      if ((mk & ~std::uint64_t(0xffffffff)) == stamp) {  // u was taken by flip h of this iteration
-        const std::int64_t h = static_cast<std::int64_t>(mk & 0xffffffff);
-        // h's entry for u's face towards the old tet (the one face u and it share)
-        int k = 0;
-        while (k < 5 && !(et[6 * h + k] == old && rec[h].in[ext_old_tet(ec[6 * h + k])] == u)) ++k;
-        m.nraw[4 * std::int64_t(mine) + ext_new_face(c)] = rec[h].out[ext_new_tet(ec[6 * h + k])];
-      } else {
-        // (other entries may rewrite u's other entries meanwhile: MeshView::nb_face)
-        par::atomic_store(&m.nraw[4 * std::int64_t(u) + m.nb_face<true>(u, old)], mine);
-      }
-    };
-    // a 3-2 flip's third slot: dead, and on the free stack (TetMesh::reserve_free)
-    tid_t* ftop = mesh_.free_top();
-    auto free_third = [=] GDEL_LAMBDA(std::int64_t f) {
-      if (rec[f].type != 2) return;
-      const tid_t t = rec[f].in[2];
-      m.state[t] = 0;
-      ftop[f - o23[f]] = t;
-    };
+    // the adjacency across external faces, the 3-2 flips' third slots and the next
+    // active set's candidates (FlipCommit)
+    const vid_t inf = static_cast<vid_t>(n_);
+    const int vbits = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_)));
+    const int vshift = std::min(space_shift_, vbits - 1);  // GDEL_SPACE_SHIFT: coarser keys
+    const FlipCommit fc{xf, plp, np, mesh_.free_top(), inf, vshift};
     // next active set: the rejected proposers (the stuck tets among them) that no flip
-    // took, and the flips' new tets, in stream, space or slot order (stream_order,
-    // space_order; the default is stream order). Candidate c < np is proposer c, kept
-    // unless a flip took its tet (stamped by ExecuteFlip: left to that flip, or freed; an
-    // accepted proposer's own flip took it);
-    // c >= np is new tet (c - np) % 3 of flip (c - np) / 3 (-1: none). Each tet is the
-    // candidate of exactly one c. In stream order the candidates' tets are listed in the
-    // order of c, in the team or by one compaction. Otherwise they are listed, then
-    // sorted: in a team (small iterations), and on the GPU in a large iteration where the
-    // bound is below 1/kListedActiveRatio of the slots (on the CPU a sort costs more than
-    // the pass). Otherwise each is marked (kQueued) and the marked slots are gathered in
-    // order by one pass over the slots, then unmarked (GDEL_ACTIVE_LISTED_LARGE=0: never
-    // listed in large iterations; GDEL_ACTIVE_SLOTS=1: the pass in either; the same tets
-    // in the same order; bench/RESULTS.md, session 52).
-    auto candidate = [=] GDEL_LAMBDA(std::int64_t c) -> tid_t {
-      if (c < np) {
-        const tid_t t = A[plp[c]];
-        return (mark[t] & ~std::uint64_t(0xffffffff)) != stamp ? t : tid_t(-1);
-      }
-      return rec[(c - np) / 3].out[(c - np) % 3];
-    };
-    auto queue = [=] GDEL_LAMBDA(std::int64_t c) {
-      const tid_t t = candidate(c);
-      if (t >= 0) m.state[t] |= mesh::kQueued;
-    };
+    // took, and the flips' new tets (FlipCommit::candidate), in stream, space or slot
+    // order (stream_order, space_order; the default is stream order). In stream order
+    // the candidates' tets are listed in the order of c, in the team or by one
+    // compaction. Otherwise they are listed, then sorted: in a team (small iterations),
+    // and on the GPU in a large iteration where the bound is below 1/kListedActiveRatio
+    // of the slots (on the CPU a sort costs more than the pass). Otherwise each is marked
+    // (kQueued) and the marked slots are gathered in order by one pass over the slots,
+    // then unmarked (GDEL_ACTIVE_LISTED_LARGE=0: never listed in large iterations;
+    // GDEL_ACTIVE_SLOTS=1: the pass in either; the same tets in the same order;
+    // bench/RESULTS.md, session 52).
     const std::int64_t abound = np + 3 * nfl;  // the next active set's bound
     const bool list_in_team = team && !active_by_slots_;
     // in stream order (stream_order) the candidates are listed in their own order: no
@@ -1412,57 +1534,20 @@ class GFlip3D {
     // sort of bit_width(n) bits (3 radix passes at 10^7 where the 64-bit key took 7): the
     // same order.
     const bool by_space = space_order();
-    const vid_t inf = static_cast<vid_t>(n_);
-    const int vbits = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_)));
-    const int vshift = std::min(space_shift_, vbits - 1);  // GDEL_SPACE_SHIFT: coarser keys
-    auto space_vertex = [=] GDEL_LAMBDA(tid_t t) -> std::uint32_t {
-      return static_cast<std::uint32_t>(smallest_finite_vertex(m.tet[t], inf)) >> vshift;
-    };
-    auto space_key = [=] GDEL_LAMBDA(tid_t t) -> std::uint64_t {
-      return (static_cast<std::uint64_t>(space_vertex(t)) << 32) | static_cast<std::uint32_t>(t);
-    };
     Buffer<tid_t, B> act(ctx_);
     if (team) {
-      // In stream order the candidates are selected straight into the next active set.
-      Buffer<tid_t, B> listed(ctx_, list_in_team && !stream ? static_cast<std::size_t>(abound) : 0);
-      Buffer<std::uint64_t, B> skeys(ctx_, list_in_team && by_space ? static_cast<std::size_t>(2 * abound) : 0);
+      const FlipCommit::Order order = next_order();
+      Buffer<tid_t, B> listed(ctx_, list_in_team && order != FlipCommit::Order::kStream ? static_cast<std::size_t>(abound) : 0);
+      Buffer<std::uint64_t, B> skeys(ctx_, list_in_team && order == FlipCommit::Order::kSpace ? static_cast<std::size_t>(2 * abound) : 0);
       std::uint64_t* skp = skeys.data();
       if (list_in_team) act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
-      tid_t* lp = stream ? acp : listed.data();
+      tid_t* lp = listed.data();
       double* work = team_work(g);
       std::int64_t* tally = cn + 3;
       par::team_run(ctx_, [=] GDEL_LAMBDA(const par::Team& tm) {
-        double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
-        std::int64_t nex = 0;
-        for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) {
-          if (xfast(f)) continue;
-          ++nex;
-          execute_flip_exact(xf, f, w);
-        }
-        if (nex) par::atomic_add(tally, nex);
-        tm.sync();
-        for (std::int64_t e = tm.rank(); e < 6 * nfl; e += tm.size()) link(e);
-        for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) free_third(f);
-        if (!list_in_team) {
-          for (std::int64_t c = tm.rank(); c < abound; c += tm.size()) queue(c);
-          return;
-        }
-        // (the candidates read the flips' stamps and records, written before the sync above)
-        const std::int64_t k = par::team_select(tm, abound, lp, [=](std::int64_t c) { return candidate(c) >= 0; });
-        for (std::int64_t j = tm.rank(); j < k; j += tm.size()) {
-          lp[j] = candidate(lp[j]);
-          if (by_space) skp[j] = space_key(lp[j]);
-        }
-        if (by_space) {
-          tm.sync();
-          par::team_sort_distinct(tm, skp, k, skp + abound);
-          for (std::int64_t j = tm.rank(); j < k; j += tm.size()) acp[j] = static_cast<tid_t>(skp[abound + j] & 0xffffffffu);
-        } else if (!stream) {
-          tm.sync();
-          par::team_sort_distinct(tm, lp, k, acp);
-        }  // (in stream order lp is act)
-        if (tm.rank() == 0) cn[4] = k;
+        const std::int64_t k = fc.team(tm, nfl, work, tally, list_in_team, order, lp, acp, skp);
+        if (list_in_team && tm.rank() == 0) cn[4] = k;
       });
       par::mark(ctx_, "flip: records + tets + adjacency (team)");
     } else {
@@ -1472,12 +1557,12 @@ class GFlip3D {
       prop.release();  // (the codes and the accepted list are the records' now)
       fl.release();
       und2.release();
-      par::parallel_for(ctx_, 6 * nfl, link);
+      par::parallel_for(ctx_, 6 * nfl, [=] GDEL_LAMBDA(std::int64_t e) { fc.link(e); });
       par::mark(ctx_, "flip: adjacency");
       ext_code.release();  // not needed past here: room for the next active set's sort
       ext_tet.release();
-      par::parallel_for(ctx_, nfl, free_third);
-      if (!list_large) par::parallel_for(ctx_, abound, queue);
+      par::parallel_for(ctx_, nfl, [=] GDEL_LAMBDA(std::int64_t f) { fc.free_third(f); });
+      if (!list_large) par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t c) { fc.queue(c); });
     }
     mesh_.pushed_free(nfl - n23);
     off23.release();
@@ -1486,7 +1571,8 @@ class GFlip3D {
     if (list_large && stream) {  // the candidates in their order (entries past the count unused)
       act.resize(static_cast<std::size_t>(abound));
       tid_t* acp = act.data();
-      par::select_mapped_to(ctx_, static_cast<std::size_t>(abound), acp, cn + 4, candidate,
+      par::select_mapped_to(ctx_, static_cast<std::size_t>(abound), acp, cn + 4,
+                            [=] GDEL_LAMBDA(std::int64_t c) { return fc.candidate(c); },
                             [=] GDEL_LAMBDA(tid_t t) { return t >= 0; });
     } else if (list_large) {  // unused entries (past the count) sort last, as the slot count
       act.resize(static_cast<std::size_t>(abound));
@@ -1494,8 +1580,8 @@ class GFlip3D {
       const std::int64_t* cnt = cn + 4;
       const tid_t past = static_cast<tid_t>(mesh_.size());
       par::select_indices_to(ctx_, static_cast<std::size_t>(abound), acp, cn + 4,
-                             [=] GDEL_LAMBDA(tid_t c) { return candidate(c) >= 0; });
-      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = j < *cnt ? candidate(acp[j]) : past; });
+                             [=] GDEL_LAMBDA(tid_t c) { return fc.candidate(c) >= 0; });
+      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { acp[j] = j < *cnt ? fc.candidate(acp[j]) : past; });
       par::sort_keys(ctx_, acp, static_cast<std::size_t>(abound),
                      std::max(1, static_cast<int>(std::bit_width(static_cast<std::uint32_t>(past)))));
     } else if (!list_in_team) {  // the marked slots, in slot order
@@ -1513,7 +1599,7 @@ class GFlip3D {
       Buffer<std::uint32_t, B> key(ctx_, static_cast<std::size_t>(abound));
       std::uint32_t* kp = key.data();
       tid_t* acp = act.data();
-      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { kp[j] = j < *cnt ? space_vertex(acp[j]) : ~std::uint32_t(0); });
+      par::parallel_for(ctx_, abound, [=] GDEL_LAMBDA(std::int64_t j) { kp[j] = j < *cnt ? fc.space_vertex(acp[j]) : ~std::uint32_t(0); });
       par::sort_pairs(ctx_, key, act, static_cast<std::size_t>(abound), vbits - vshift);
     }
     if (defer) {
@@ -1527,6 +1613,190 @@ class GFlip3D {
     else log_.clear();
     st_.flip_iterations++;  // also the stamps (aux_key_) of the next iteration's votes and flips
     return nfl;
+  }
+
+  // --- the team flip loop ---------------------------------------------------------------
+  // Small flip iterations (active sets of at most team_max_ tets, as the host counts them)
+  // one after the other in one team, without the host between them: each makes its
+  // proposals, votes, flips and next active set as commit_flips' two teams do
+  // (team_propose, FlipVote::team, FlipCommit::team) and claims its slots from the free
+  // stack and the high-water mark in the team. One launch and one wait for a run of
+  // them, where each took two launches, a slot claim and a wait (bench/RESULTS.md,
+  // session 71). The same flips in the same order with the same stamps as the host's
+  // iterations, so the same triangulation (TeamLoopChangesNothing). A run stops before
+  // an iteration whose active set's bound passes team_max_ or whose flips might not fit
+  // the room reserved for them (tet slots, free stack, log records: a flip each at most),
+  // and after kTeamLoopIterations; flip_loop goes on from there. finished: the last
+  // iteration flipped nothing (flip_iteration's false), so the flip loop is over.
+  // GDEL_TEAM_LOOP=1 turns it on (a study until measured on a GPU).
+  struct TeamLoopResult {
+    std::int64_t iterations;
+    bool finished;
+  };
+  static constexpr std::int64_t kTeamLoopIterations = 512;
+  static constexpr int kLoopWords = 16;  // the run's counts (out[0, kLoopWords)), then the log's ends
+  bool team_loop_on() const { return team_loop_ && !debug_ && trace_ < 2 && !active_by_slots_ && team_max_ > 0; }
+  TeamLoopResult team_flip_loop(std::int64_t na, bool with_log, std::int64_t max_iterations) {
+    const std::int64_t tmax = team_max_;
+    const std::int64_t kmax = std::min(kTeamLoopIterations, max_iterations);
+    if (kmax <= 0) return {0, false};
+    // room: 4 team_max_ tet slots past the high-water mark (a run stops where an
+    // iteration's 2-3 flips might not fit), 16 team_max_ free-stack entries, and the
+    // log's records (with the log, up to its cap; without, team_max_ from 0 each time)
+    if (mesh_.capacity() - mesh_.size() < 4 * tmax) mesh_.reserve(mesh_.size() + 4 * tmax);
+    grow_aux();
+    mesh_.reserve_free(16 * tmax);
+    if (!with_log) {
+      log_.clear();
+      log_.reserve(static_cast<std::size_t>(tmax));
+    }
+    const std::int64_t log_room =
+        with_log ? std::min<std::int64_t>(static_cast<std::int64_t>(log_.capacity()), log_capacity())
+                 : static_cast<std::int64_t>(log_.capacity());
+    const MeshView m = mesh_.view();
+    const Geo g = geo();
+    Buffer<std::int32_t, B> prop(ctx_, static_cast<std::size_t>(tmax)), pl(ctx_, static_cast<std::size_t>(tmax)),
+        fl(ctx_, static_cast<std::size_t>(tmax)), off23(ctx_, static_cast<std::size_t>(tmax + 1));
+    Buffer<std::uint16_t, B> ext_code(ctx_, static_cast<std::size_t>(6 * tmax));
+    Buffer<tid_t, B> ext_tet(ctx_, static_cast<std::size_t>(6 * tmax));
+    Buffer<tid_t, B> acts[2] = {Buffer<tid_t, B>(ctx_, static_cast<std::size_t>(4 * tmax)),
+                                Buffer<tid_t, B>(ctx_, static_cast<std::size_t>(4 * tmax))};
+    const FlipCommit::Order order = next_order();
+    Buffer<tid_t, B> listed(ctx_, order != FlipCommit::Order::kStream ? static_cast<std::size_t>(4 * tmax) : 0);
+    Buffer<std::uint64_t, B> skeys(ctx_, order == FlipCommit::Order::kSpace ? static_cast<std::size_t>(8 * tmax) : 0);
+    Buffer<std::int64_t, B> state(ctx_, static_cast<std::size_t>(kLoopWords + kmax));
+    std::int32_t *pp = prop.data(), *plp = pl.data(), *flp = fl.data(), *o23 = off23.data();
+    const ExtFaces ext{ext_code.data(), ext_tet.data()};
+    tid_t* act[2] = {acts[0].data(), acts[1].data()};
+    tid_t* lp = listed.data();
+    std::uint64_t* skp = skeys.data();
+    std::int64_t* out = state.data();
+    const tid_t* A0 = active_.data();
+    const std::int64_t* alen = active_deferred_ ? counts_.data() + 4 : nullptr;
+    std::int64_t* cn = counts_.data();
+    tid_t* stack = mesh_.free_stack();
+    const std::int64_t cap_slots = mesh_.capacity(), stack_room = mesh_.free_room();
+    const std::int64_t size0 = mesh_.size(), top0 = mesh_.free_count();
+    FlipRec* log = log_.data();
+    const std::int64_t log0 = with_log ? static_cast<std::int64_t>(log_.size()) : 0;
+    std::uint64_t* aux = aux_key_.data();
+    const std::int64_t fi0 = st_.flip_iterations;
+    const bool keep_stuck = cfg_.independent_splits;
+    const std::int64_t max_flips = cfg_.max_flips_per_iteration;
+    const bool defer = defer_active();
+    const vid_t inf = static_cast<vid_t>(n_);
+    const int vbits = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_)));
+    const int vshift = std::min(space_shift_, vbits - 1);
+    double* work = team_work(g);
+    par::team_run(ctx_, [=] GDEL_LAMBDA(const par::Team& tm) {
+      std::int64_t bound = na;                // the active set's length as the host counts it
+      std::int64_t len = alen ? *alen : na;  // its length
+      std::int64_t size = size0, top = top0, logn = log0, it = 0, f23 = 0, f32 = 0, proposed = 0, ex0 = 0;
+      bool finished = false;
+      int at = -1;  // the set: in A0 (-1) or act[at]
+      const tid_t* cur = A0;
+      while (it < kmax && bound <= tmax) {
+        if (bound == 0 || len == 0) {  // (flip_loop's end, or an iteration that finds no proposer)
+          if (bound > 0) proposed += bound;
+          finished = true;
+          len = 0;
+          break;
+        }
+        if (size + len > cap_slots || top + len > stack_room || logn + len > log_room) break;
+        proposed += bound;
+        if (tm.rank() == 0) ex0 = cn[3];  // (read before this iteration's atomics: the sync below)
+        tm.sync();
+        team_propose(tm, g, m, cur, len, len, pp, work, cn + 3);
+        const FlipVote fv{m, cur, pp, plp, aux, high_word(fi0 + it, 2), keep_stuck};
+        FlipVote::Counts c = fv.team(tm, len, flp, o23);
+        const int nx = at == 0 ? 1 : 0;  // the next set's buffer
+        tid_t* next = act[nx];
+        if (c.np == 0) {
+          finished = true;
+          len = 0;
+          break;
+        }
+        if (c.nf == 0) {  // only stuck tets: they stay active (not deferred)
+          for (std::int64_t j = tm.rank(); j < c.np; j += tm.size()) next[j] = cur[plp[j]];
+          tm.sync();
+          at = nx;
+          len = bound = c.np;
+          finished = true;
+          break;
+        }
+        if (c.nf > max_flips) {  // the rest stand down (FlipConfig::max_flips_per_iteration)
+          c.nf = max_flips;
+          c.n23 = o23[max_flips];
+        }
+        for (std::int64_t f = tm.rank(); f < c.nf; f += tm.size()) flp[f] = plp[flp[f]];
+        tm.sync();
+        // the claim (TetMesh::claim): the 2-3 flips' slots from the free stack first
+        const std::int64_t from_stack = c.n23 < top ? c.n23 : top;
+        const mesh::SlotSource src{stack, top, from_stack, size};
+        top -= from_stack;
+        size += c.n23 - from_stack;
+        const ExecuteFlip xf{m, g, cur, flp, pp, log + logn, src, o23, aux, high_word(fi0 + it, 3), ext};
+        const FlipCommit fc{xf, plp, c.np, stack + top, inf, vshift};
+        const std::int64_t k = fc.team(tm, c.nf, work, cn + 3, true, order, lp, next, skp);
+        top += c.nf - c.n23;  // (the 3-2 flips' third slots, pushed)
+        f23 += c.n23;
+        f32 += c.nf - c.n23;
+        if (with_log) {
+          logn += c.nf;
+          if (tm.rank() == 0) out[kLoopWords + it] = logn;
+        }
+        ++it;
+        at = nx;
+        cur = next;
+        len = k;
+        bound = defer ? c.np + 3 * c.nf : k;
+      }
+      if (tm.rank() == 0) {
+        out[0] = it;
+        out[1] = finished ? 1 : 0;
+        out[2] = len;
+        out[3] = bound;
+        out[4] = size;
+        out[5] = top;
+        out[6] = logn;
+        out[7] = f23;
+        out[8] = f32;
+        out[9] = proposed;
+        out[10] = ex0;
+        out[11] = at;
+        out[12] = cn[3];  // (every thread's atomics came before the last sync)
+        cn[4] = len;
+      }
+    });
+    std::vector<std::int64_t> h(static_cast<std::size_t>(kLoopWords + kmax));
+    par::detail::Memory<B>::to_host(ctx_, h.data(), out, h.size() * sizeof(std::int64_t));
+    par::mark(ctx_, "flip: team loop");
+    const std::int64_t iters = h[0];
+    const bool finished = h[1] != 0;
+    if (h[9] > 0) marks_dirty_ = true;  // (votes were cast)
+    proposed_ += h[9];
+    st_.flip_iterations += iters;
+    st_.flips23 += h[7];
+    st_.flips32 += h[8];
+    mesh_.set_counts(h[4], h[5]);
+    exact_seen_ = h[12] - h[10];
+    tally_seen_ = h[12];
+    if (with_log) {
+      log_.resize(static_cast<std::size_t>(h[6]));
+      for (std::int64_t j = 0; j < iters; ++j) log_iters_.push_back(h[static_cast<std::size_t>(kLoopWords + j)]);
+    } else {
+      log_.clear();
+    }
+    const int at = static_cast<int>(h[11]);
+    if (finished && h[2] == 0) {
+      active_.release();
+      active_deferred_ = false;
+    } else if (at >= 0) {
+      active_ = std::move(acts[at]);
+      active_deferred_ = !finished && defer;
+      active_.resize(static_cast<std::size_t>(active_deferred_ ? h[3] : h[2]));
+    }
+    return {iters, finished};
   }
 
   // --- non-optimal flipping (Options::nonoptimal_flips; docs/gflip3d.md) -----------------
@@ -1913,6 +2183,7 @@ class GFlip3D {
   // three pairs and no slower at 10^6 (bench/RESULTS.md, session 58).
   bool reorder_gather_ = !par::knob_off("GDEL_REORDER_GATHER");
   bool active_by_slots_ = par::knob_on("GDEL_ACTIVE_SLOTS");
+  bool team_loop_ = par::knob_on("GDEL_TEAM_LOOP");  // team_flip_loop
   // The order of a flip iteration's next active set. Slots are in space order only just
   // after a tet sort; within a round new tets take freed or fresh slots, so in slot order
   // a warp's active tets lie apart and share few neighbours and points.
@@ -1969,6 +2240,10 @@ class GFlip3D {
     if (cfg_.independent_splits) return false;
     if (space_order_ == SpaceOrder::kSorted) return mesh_.size() >= kSpaceOrderMinSlots;
     return space_order_ == SpaceOrder::kAuto && mesh_.size() >= stream_max_slots_;
+  }
+  // the next active set's order in a team (FlipCommit::team)
+  FlipCommit::Order next_order() const {
+    return space_order() ? FlipCommit::Order::kSpace : stream_order() ? FlipCommit::Order::kStream : FlipCommit::Order::kSlot;
   }
   bool stream_order() const {
     if (active_by_slots_) return false;

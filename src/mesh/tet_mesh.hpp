@@ -269,6 +269,15 @@ class TetMesh {
   }
   tid_t* free_top() { return free_.data() + free_count_; }
   void pushed_free(std::int64_t k) { free_count_ += k; }
+  // For a caller whose kernels claim and free slots over several steps without the host
+  // (gFlip3D's team flip loop): the stack's base and room (entries it holds without
+  // moving, after reserve_free), and the counts those kernels leave, set back here.
+  tid_t* free_stack() { return free_.data(); }
+  std::int64_t free_room() const { return static_cast<std::int64_t>(free_.size()); }
+  void set_counts(std::int64_t size, std::int64_t free_count) {
+    size_ = size;
+    free_count_ = free_count;
+  }
 
   // Makes this mesh a copy of o (same context): slots [0, o.size()), the free stack and
   // the high-water mark; this mesh's slots past o.size() become dead. Used to keep a

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 #include "common/expect_error.hpp"
 #include "gdel/delaunay.hpp"
@@ -285,6 +286,24 @@ inline void gflip_dag_stamp_cases(Backend b, std::size_t n) {
   ::unsetenv("GDEL_FLIP_LOG_RECORDS");
 }
 
+// Runs of small flip iterations in one team (GDEL_TEAM_LOOP=1: GFlip3D::team_flip_loop)
+// against the host driving each: the same flips, in the same order, so the same output;
+// with the default team size, with a small one (GDEL_TEAM_MAX=64: runs end often, where a
+// set outgrows the team, and the host's iterations take over), with a log of 4 096
+// records (relocations between runs; a run stops where its flips might pass the log's
+// cap) and with at most 16 flips an iteration (the cap binding inside the runs)
+inline void gflip_team_loop_cases(Backend b, std::size_t n) {
+  knob_same_output_cases(b, n, "GDEL_TEAM_LOOP", "1");
+  const std::pair<const char*, const char*> with[] = {
+      {"GDEL_TEAM_MAX", "64"}, {"GDEL_FLIP_LOG_RECORDS", "4096"}, {"GDEL_FLIPS_PER_ITERATION", "16"}};
+  for (const auto& [k, v] : with) {
+    SCOPED_TRACE(std::string(k) + "=" + v);
+    ::setenv(k, v, 1);
+    knob_same_output_cases(b, n / 2, "GDEL_TEAM_LOOP", "1");
+    ::unsetenv(k);
+  }
+}
+
 // the insertion's scores through an atomic max on every key (GDEL_SCORE_RAISE=0), not
 // par::atomic_raise (the default): the same keys
 inline void gflip_score_raise_cases(Backend b, std::size_t n) { knob_same_output_cases(b, n, "GDEL_SCORE_RAISE", "0"); }
@@ -313,6 +332,7 @@ inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
     const char* propose;
     const char* split;
     const char* slots = "0";  // GDEL_ACTIVE_SLOTS
+    const char* loop = "0";   // GDEL_TEAM_LOOP
   };
   const Path paths[] = {{"0", "auto", "1"},
                         {"0", "auto", "0"},
@@ -320,19 +340,23 @@ inline void gflip_small_iteration_paths_cases(Backend b, std::size_t n) {
                         {"1024", "spread", "1"},
                         {"100000000", "spread", "1"},
                         {"1024", "auto", "1", "1"},
-                        {"0", "auto", "1", "1"}};
+                        {"0", "auto", "1", "1"},
+                        {"1024", "auto", "1", "0", "1"},
+                        {"64", "spread", "1", "0", "1"}};
   auto check_order = [&](const std::vector<double>& pts, const Options& o, bool with_slots = true) {
     const Triangulation base = delaunay(pts, o);
     expect_flip_output_valid(pts, base, b);
     for (const Path& p : paths) {
       if (!with_slots && std::string(p.slots) == "1") continue;
       SCOPED_TRACE(std::string("GDEL_TEAM_MAX=") + p.team_max + " GDEL_TEAM_PROPOSE=" + p.propose +
-                   " GDEL_SPLIT_EXACT=" + p.split + " GDEL_ACTIVE_SLOTS=" + p.slots);
+                   " GDEL_SPLIT_EXACT=" + p.split + " GDEL_ACTIVE_SLOTS=" + p.slots + " GDEL_TEAM_LOOP=" + p.loop);
       ::setenv("GDEL_TEAM_MAX", p.team_max, 1);
       ::setenv("GDEL_TEAM_PROPOSE", p.propose, 1);
       ::setenv("GDEL_SPLIT_EXACT", p.split, 1);
       ::setenv("GDEL_ACTIVE_SLOTS", p.slots, 1);
+      ::setenv("GDEL_TEAM_LOOP", p.loop, 1);
       const Triangulation t = delaunay(pts, o);
+      ::unsetenv("GDEL_TEAM_LOOP");
       ::unsetenv("GDEL_TEAM_MAX");
       ::unsetenv("GDEL_TEAM_PROPOSE");
       ::unsetenv("GDEL_SPLIT_EXACT");

@@ -10,6 +10,7 @@ TEST(GFlip3DCpu, NonoptimalRoundsUnderIndependentSplits) { gdel::test::nonoptima
 TEST(GFlip3DCpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cpu, 20000); }
 TEST(GFlip3DCpu, ScoreRaiseChangesNothing) { gdel::test::gflip_score_raise_cases(gdel::Backend::Cpu, 20000); }
 TEST(GFlip3DCpu, DagStampChangesNothing) { gdel::test::gflip_dag_stamp_cases(gdel::Backend::Cpu, 20000); }
+TEST(GFlip3DCpu, TeamLoopChangesNothing) { gdel::test::gflip_team_loop_cases(gdel::Backend::Cpu, 20000); }
 TEST(GFlip3DCpu, SmallIterationPathsSameResult) { gdel::test::gflip_small_iteration_paths_cases(gdel::Backend::Cpu, 20000); }
 TEST(GFlip3DCpu, SosOrderOnCosphericalInput) { gdel::test::gflip_sos_order_cases(gdel::Backend::Cpu, 20000); }
 TEST(GFlip3DCpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cpu, 6000, "64"); }

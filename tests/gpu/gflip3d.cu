@@ -10,6 +10,7 @@ TEST(GFlip3DGpu, NonoptimalRoundsUnderIndependentSplits) { gdel::test::nonoptima
 TEST(GFlip3DGpu, LogFlushesChangeNothing) { gdel::test::gflip_log_flush_cases(gdel::Backend::Cuda, 200000); }
 TEST(GFlip3DGpu, ScoreRaiseChangesNothing) { gdel::test::gflip_score_raise_cases(gdel::Backend::Cuda, 200000); }
 TEST(GFlip3DGpu, DagStampChangesNothing) { gdel::test::gflip_dag_stamp_cases(gdel::Backend::Cuda, 200000); }
+TEST(GFlip3DGpu, TeamLoopChangesNothing) { gdel::test::gflip_team_loop_cases(gdel::Backend::Cuda, 200000); }
 TEST(GFlip3DGpu, SmallIterationPathsSameResult) { gdel::test::gflip_small_iteration_paths_cases(gdel::Backend::Cuda, 100000); }
 TEST(GFlip3DGpu, SosOrderOnCosphericalInput) { gdel::test::gflip_sos_order_cases(gdel::Backend::Cuda, 100000); }
 TEST(GFlip3DGpu, FlipCapPerIteration) { gdel::test::gflip_flip_cap_cases(gdel::Backend::Cuda, 20000, "256"); }
