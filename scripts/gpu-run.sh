@@ -137,6 +137,11 @@ bench_log10() { GDEL_FLIP_LOG_RECORDS=10000000 bench "$@"; }
 bench_log20() { GDEL_FLIP_LOG_RECORDS=20000000 bench "$@"; }
 bench_log40() { GDEL_FLIP_LOG_RECORDS=40000000 bench "$@"; }
 
+# bench with the flip log's cap of half a record a point (5 million records at uniform
+# 10^7: the default before session 71's floor of 2*10^7 from 10^7 points up):
+# bench_log05 NAME LIMIT ARGS
+bench_log05() { GDEL_FLIP_LOG_RECORDS=5000000 bench "$@"; }
+
 # bench with runs of small flip iterations in one team (GDEL_TEAM_LOOP=1, session 71's
 # study): bench_loop NAME LIMIT ARGS
 bench_loop() { GDEL_TEAM_LOOP=1 bench "$@"; }
@@ -2143,6 +2148,16 @@ for (_, r, s), n in zip(items, names):
     ab s71a 2 0 bench_log20
     gpu_tests gpu_gflip3d gpu_parallel
     step gpu_predicates 60 "$tbin/gpu_predicates"
+    ;;
+  s72a)  # session 72: the build with the flip log's floor (2*10^7 records from 10^7 points up) against its old cap at 10^7 (5 million, GDEL_FLIP_LOG_RECORDS), uniform 10^7 x3 alternating; uniform 10^8 (the floor does not apply); 10^6 x2 (default, the team runs on every input and auto); the knob tests; every GPU test. In order of need (≈ 480 s)
+    ab s72a 3 0 bench bench_log05
+    e8 s72a_1e8
+    ab s72a 0 2 bench bench_loop
+    GDEL_TEAM_LOOP=auto ab s72a_auto 0 1 bench
+    step gpu_gflip3d_knobs 280 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
+    gpu_tests gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_parallel
+    step gpu_predicates 60 "$tbin/gpu_predicates"
+    step gpu_gflip3d_rest 280 "$tbin/gpu_gflip3d" --gtest_filter='-*ChangesNothing*:*LogFlush*'
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

@@ -110,8 +110,13 @@ struct FlipConfig {
   int nonoptimal_steps = 8;
   // The flip log of a round (the flip DAG that relocates the uninserted points) holds at
   // most this many records per point (48 bytes each): past it, the points are relocated
-  // through the flips so far and the log starts again (same result; an extra walk).
+  // through the flips so far and the log starts again (same result; an extra walk) ...
   double log_records_per_point = 0.5;
+  // ... and at least this many from log_floor_min_points points up (two records a point
+  // at 10^7, where 5 million took 9-10 ms more in walks: bench/RESULTS.md, session 71;
+  // half a record a point is more from 4 * 10^7 up, so 10^8's peak is unchanged)
+  std::int64_t log_records_floor = 20000000;
+  std::int64_t log_floor_min_points = 10000000;
   // ... or exactly this many records when > 0 (test knob GDEL_FLIP_LOG_RECORDS, read by
   // run(): a few records exercise the flushes).
   std::int64_t log_records = 0;
@@ -1132,7 +1137,7 @@ class GFlip3D {
       // a run of small iterations in one team (not where the log's cap is below four
       // teams' flips: it would end most runs; the log is consumed first where a run could
       // not add a team's flips to it)
-      if (na <= team_max_ && team_loop_on() && (!with_log || log_cap >= 4 * team_max_)) {
+      if (na <= team_max_ && team_loop_on(geo()) && (!with_log || log_cap >= 4 * team_max_)) {
         if (with_log && !log_.empty() && static_cast<std::int64_t>(log_.size()) + team_max_ > log_cap) relocate_through_dag();
         const TeamLoopResult r = team_flip_loop(na, with_log, cfg_.max_flip_iterations - it);
         check_mesh("after a team flip loop");
@@ -1628,14 +1633,18 @@ class GFlip3D {
   // the room reserved for them (tet slots, free stack, log records: a flip each at most),
   // and after kTeamLoopIterations; flip_loop goes on from there. finished: the last
   // iteration flipped nothing (flip_iteration's false), so the flip loop is over.
-  // GDEL_TEAM_LOOP=1 turns it on (a study until measured on a GPU).
+  // Off by default (team_loop_on, team_loop_; H100, session 71: uniform 10^7 -2.1 to
+  // -2.6 ms, 10^6 -2.2 to -2.5 ms; the grid's 10^6 +12 ms with it).
   struct TeamLoopResult {
     std::int64_t iterations;
     bool finished;
   };
   static constexpr std::int64_t kTeamLoopIterations = 512;
   static constexpr int kLoopWords = 16;  // the run's counts (out[0, kLoopWords)), then the log's ends
-  bool team_loop_on() const { return team_loop_ && !debug_ && trace_ < 2 && !active_by_slots_ && team_max_ > 0; }
+  bool team_loop_on(const Geo& g) const {
+    const bool on = team_loop_ == TeamLoop::kOn || (team_loop_ == TeamLoop::kAuto && !spread_propose(g));
+    return on && !debug_ && trace_ < 2 && !active_by_slots_ && team_max_ > 0;
+  }
   TeamLoopResult team_flip_loop(std::int64_t na, bool with_log, std::int64_t max_iterations) {
     const std::int64_t tmax = team_max_;
     const std::int64_t kmax = std::min(kTeamLoopIterations, max_iterations);
@@ -2057,7 +2066,8 @@ class GFlip3D {
   // Records the flip log holds before the points are relocated through it (FlipConfig).
   std::int64_t log_capacity() const {
     if (cfg_.log_records > 0) return cfg_.log_records;
-    return std::max<std::int64_t>(std::int64_t(1) << 16, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
+    const std::int64_t floor = n_ >= cfg_.log_floor_min_points ? cfg_.log_records_floor : std::int64_t(1) << 16;
+    return std::max<std::int64_t>(floor, static_cast<std::int64_t>(cfg_.log_records_per_point * n_));
   }
 
   // --- relocation of uninserted points through the flip DAG --------------------------
@@ -2183,7 +2193,16 @@ class GFlip3D {
   // three pairs and no slower at 10^6 (bench/RESULTS.md, session 58).
   bool reorder_gather_ = !par::knob_off("GDEL_REORDER_GATHER");
   bool active_by_slots_ = par::knob_on("GDEL_ACTIVE_SLOTS");
-  bool team_loop_ = par::knob_on("GDEL_TEAM_LOOP");  // team_flip_loop
+  // team_flip_loop: GDEL_TEAM_LOOP=1 on every input, =auto where small sets propose in
+  // the team (spread_propose: not on integer input, whose proposals' exact ties in one
+  // block made the grid's 10^6 points 12 ms slower); off by default: auto's 2.3 ms off
+  // uniform 10^6 would put the grid at 2.00-2.01x of it (the 2x target; bench/RESULTS.md,
+  // session 71)
+  enum class TeamLoop { kOff, kOn, kAuto };
+  TeamLoop team_loop_ = [] {
+    const std::string v = par::knob_value("GDEL_TEAM_LOOP");
+    return v == "1" ? TeamLoop::kOn : v == "auto" ? TeamLoop::kAuto : TeamLoop::kOff;
+  }();
   // The order of a flip iteration's next active set. Slots are in space order only just
   // after a tet sort; within a round new tets take freed or fresh slots, so in slot order
   // a warp's active tets lie apart and share few neighbours and points.

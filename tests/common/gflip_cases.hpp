@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <utility>
 
 #include "common/expect_error.hpp"
@@ -286,21 +287,25 @@ inline void gflip_dag_stamp_cases(Backend b, std::size_t n) {
   ::unsetenv("GDEL_FLIP_LOG_RECORDS");
 }
 
-// Runs of small flip iterations in one team (GDEL_TEAM_LOOP=1: GFlip3D::team_flip_loop)
-// against the host driving each: the same flips, in the same order, so the same output;
-// with the default team size, with a small one (GDEL_TEAM_MAX=64: runs end often, where a
-// set outgrows the team, and the host's iterations take over), with a log of 4 096
-// records (relocations between runs; a run stops where its flips might pass the log's
-// cap) and with at most 16 flips an iteration (the cap binding inside the runs)
+// Runs of small flip iterations in one team (GFlip3D::team_flip_loop: GDEL_TEAM_LOOP=1 on
+// every input, =auto where small sets propose in the team, here uniform and thin-shell
+// points) against the host driving each iteration (the default): the same flips, in the
+// same order, so the same output; with the default team size, with a small one
+// (GDEL_TEAM_MAX=64: runs end often, where a set outgrows the team, and the host's
+// iterations take over), with a log of 4 096 records (relocations between runs; a run
+// stops where its flips might pass the log's cap) and with at most 16 flips an iteration
+// (the cap binding inside the runs)
 inline void gflip_team_loop_cases(Backend b, std::size_t n) {
   knob_same_output_cases(b, n, "GDEL_TEAM_LOOP", "1");
-  const std::pair<const char*, const char*> with[] = {
-      {"GDEL_TEAM_MAX", "64"}, {"GDEL_FLIP_LOG_RECORDS", "4096"}, {"GDEL_FLIPS_PER_ITERATION", "16"}};
-  for (const auto& [k, v] : with) {
-    SCOPED_TRACE(std::string(k) + "=" + v);
-    ::setenv(k, v, 1);
-    knob_same_output_cases(b, n / 2, "GDEL_TEAM_LOOP", "1");
-    ::unsetenv(k);
+  knob_same_output_cases(b, n / 2, "GDEL_TEAM_LOOP", "auto");
+  const std::pair<const char*, std::size_t> with[] = {
+      {"GDEL_TEAM_MAX=64", n / 2}, {"GDEL_FLIP_LOG_RECORDS=4096", n / 2}, {"GDEL_FLIPS_PER_ITERATION=16", n / 8}};
+  for (const auto& [kv, m] : with) {
+    SCOPED_TRACE(kv);
+    const std::string k(kv, std::strchr(kv, '=')), v(std::strchr(kv, '=') + 1);
+    ::setenv(k.c_str(), v.c_str(), 1);
+    knob_same_output_cases(b, m, "GDEL_TEAM_LOOP", "1");
+    ::unsetenv(k.c_str());
   }
 }
 
