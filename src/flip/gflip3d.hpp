@@ -211,6 +211,11 @@ struct FlipVote {
   }
 };
 
+// A team thread's slice of the team's exact scratch (nullptr: none).
+GDEL_HD inline double* team_slice(const par::Team& tm, double* work) {
+  return work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
+}
+
 // Small active sets' proposals in a team: A[k] for k < live, one thread per tet (fast,
 // then exact: propose_flip_in_thread, the exact ones counted into *tally), -1 for
 // live <= k < na. work: the team's scratch (a slice per rank), or nullptr where every
@@ -218,7 +223,7 @@ struct FlipVote {
 GDEL_HD inline void team_propose(const par::Team& tm, const Geo& g, const MeshView& m, const tid_t* A,
                                  std::int64_t na, std::int64_t live, std::int32_t* pp, double* work,
                                  std::int64_t* tally) {
-  double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
+  double* w = team_slice(tm, work);
   std::int64_t nex = 0;
   for (std::int64_t k = tm.rank(); k < na; k += tm.size()) pp[k] = k < live ? propose_flip_in_thread(g, m, A[k], w, nex) : -1;
   if (nex) par::atomic_add(tally, nex);
@@ -301,7 +306,7 @@ struct FlipCommit {
   enum class Order { kStream, kSpace, kSlot };
   GDEL_HD std::int64_t team(const par::Team& tm, std::int64_t nfl, double* work, std::int64_t* tally, bool list,
                             Order order, tid_t* lp, tid_t* act, std::uint64_t* skp) const {
-    double* w = work ? work + std::int64_t(tm.rank()) * std::int64_t(geom::kPredicateWork) : nullptr;
+    double* w = team_slice(tm, work);
     std::int64_t nex = 0;
     for (std::int64_t f = tm.rank(); f < nfl; f += tm.size()) {
       if (xf.run<false>(f, nullptr)) continue;
@@ -1510,10 +1515,9 @@ class GFlip3D {
     auto xexact = [=] GDEL_LAMBDA(std::int64_t f, auto work) { return xf.template run<true>(f, work); };
     // the adjacency across external faces, the 3-2 flips' third slots and the next
     // active set's candidates (FlipCommit)
-    const vid_t inf = static_cast<vid_t>(n_);
     const int vbits = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_)));
-    const int vshift = std::min(space_shift_, vbits - 1);  // GDEL_SPACE_SHIFT: coarser keys
-    const FlipCommit fc{xf, plp, np, mesh_.free_top(), inf, vshift};
+    const int vshift = space_key_shift();
+    const FlipCommit fc{xf, plp, np, mesh_.free_top(), static_cast<vid_t>(n_), vshift};
     // next active set: the rejected proposers (the stuck tets among them) that no flip
     // took, and the flips' new tets (FlipCommit::candidate), in stream, space or slot
     // order (stream_order, space_order; the default is stream order). In stream order
@@ -1694,8 +1698,7 @@ class GFlip3D {
     const std::int64_t max_flips = cfg_.max_flips_per_iteration;
     const bool defer = defer_active();
     const vid_t inf = static_cast<vid_t>(n_);
-    const int vbits = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_)));
-    const int vshift = std::min(space_shift_, vbits - 1);
+    const int vshift = space_key_shift();
     double* work = team_work(g);
     par::team_run(ctx_, [=] GDEL_LAMBDA(const par::Team& tm) {
       std::int64_t bound = na;                // the active set's length as the host counts it
@@ -1740,10 +1743,7 @@ class GFlip3D {
         for (std::int64_t f = tm.rank(); f < c.nf; f += tm.size()) flp[f] = plp[flp[f]];
         tm.sync();
         // the claim (TetMesh::claim): the 2-3 flips' slots from the free stack first
-        const std::int64_t from_stack = c.n23 < top ? c.n23 : top;
-        const mesh::SlotSource src{stack, top, from_stack, size};
-        top -= from_stack;
-        size += c.n23 - from_stack;
+        const mesh::SlotSource src = mesh::claim_slots(stack, top, size, c.n23);
         const ExecuteFlip xf{m, g, cur, flp, pp, log + logn, src, o23, aux, high_word(fi0 + it, 3), ext};
         const FlipCommit fc{xf, plp, c.np, stack + top, inf, vshift};
         const std::int64_t k = fc.team(tm, c.nf, work, cn + 3, true, order, lp, next, skp);
@@ -2259,6 +2259,10 @@ class GFlip3D {
     if (cfg_.independent_splits) return false;
     if (space_order_ == SpaceOrder::kSorted) return mesh_.size() >= kSpaceOrderMinSlots;
     return space_order_ == SpaceOrder::kAuto && mesh_.size() >= stream_max_slots_;
+  }
+  // FlipCommit's space keys' coarsening: GDEL_SPACE_SHIFT, below the vertex ids' bits
+  int space_key_shift() const {
+    return std::min(space_shift_, static_cast<int>(std::bit_width(static_cast<std::uint64_t>(n_))) - 1);
   }
   // the next active set's order in a team (FlipCommit::team)
   FlipCommit::Order next_order() const {

@@ -194,6 +194,15 @@ struct SlotSource {
     return j < from_stack ? stack[top - 1 - j] : static_cast<tid_t>(size0 + (j - from_stack));
   }
 };
+// A claim of k slots, the free stack's (top entries at `stack`) first, then past the
+// high-water mark `size`; both counts updated (the room past `size`: the caller's).
+GDEL_HD inline SlotSource claim_slots(const tid_t* stack, std::int64_t& top, std::int64_t& size, std::int64_t k) {
+  const std::int64_t from_stack = k < top ? k : top;
+  const SlotSource src{stack, top, from_stack, size};
+  top -= from_stack;
+  size += k - from_stack;
+  return src;
+}
 
 template <class B>
 class TetMesh {
@@ -238,13 +247,9 @@ class TetMesh {
   // Reserves k slots (growing the arrays if needed) and returns their source. The
   // claimed slots are dead until the caller fills them.
   SlotSource claim(std::int64_t k) {
-    const std::int64_t from_stack = std::min(k, free_count_);
-    const std::int64_t fresh = k - from_stack;
+    const std::int64_t fresh = k - std::min(k, free_count_);
     if (size_ + fresh > capacity()) reserve(size_ + fresh);
-    SlotSource src{free_.data(), free_count_, from_stack, size_};
-    free_count_ -= from_stack;
-    size_ += fresh;
-    return src;
+    return claim_slots(free_.data(), free_count_, size_, k);
   }
   // Marks the k slots of `slots` dead and pushes them on the free stack, in order.
   void release(const tid_t* slots, std::int64_t k) {
