@@ -2149,14 +2149,17 @@ for (_, r, s), n in zip(items, names):
     gpu_tests gpu_gflip3d gpu_parallel
     step gpu_predicates 60 "$tbin/gpu_predicates"
     ;;
-  s72a)  # session 72: the build with the flip log's floor (2*10^7 records from 10^7 points up) against its old cap at 10^7 (5 million, GDEL_FLIP_LOG_RECORDS), uniform 10^7 x3 alternating; uniform 10^8 (the floor does not apply); 10^6 x2 (default, the team runs on every input and auto); the knob tests; every GPU test. In order of need (≈ 480 s)
-    ab s72a 3 0 bench bench_log05
+  s72a)  # session 72: the build with the flip log's floor (2*10^7 records from 10^7 points up) against its old cap at 10^7 (5 million) and a cap of 4*10^7, uniform 10^7 x3 alternating; uniform 10^8 (the floor does not apply); a step profile at 10^7; 10^6 x2 (default, the team runs on every input, a log of 2*10^7 records); auto's runs; the GPU tests but gpu_gflip3d (plan s72b). In order of need (≈ 520 s)
+    ab s72a 3 0 bench bench_log05 bench_log40
     e8 s72a_1e8
-    ab s72a 0 2 bench bench_loop
+    GDEL_PROFILE=1 bench s72a_prof7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    ab s72a 0 2 bench bench_loop bench_log20
     GDEL_TEAM_LOOP=auto ab s72a_auto 0 1 bench
-    step gpu_gflip3d_knobs 280 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
     gpu_tests gpu_gdel3d gpu_gstar4d gpu_greg3d gpu_hostile gpu_mesh gpu_parallel
     step gpu_predicates 60 "$tbin/gpu_predicates"
+    ;;
+  s72b)  # session 72: gpu_gflip3d in two steps, the knobs' tests first (≈ 360 s)
+    step gpu_gflip3d_knobs 280 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
     step gpu_gflip3d_rest 280 "$tbin/gpu_gflip3d" --gtest_filter='-*ChangesNothing*:*LogFlush*'
     ;;
   cmd)
