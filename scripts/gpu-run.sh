@@ -142,6 +142,10 @@ bench_log40() { GDEL_FLIP_LOG_RECORDS=40000000 bench "$@"; }
 # bench_log05 NAME LIMIT ARGS
 bench_log05() { GDEL_FLIP_LOG_RECORDS=5000000 bench "$@"; }
 
+# bench with one device pool kept for the process (GDEL_DEVICE_POOL=keep, session 72's
+# study: later calls find their memory mapped): bench_keep NAME LIMIT ARGS
+bench_keep() { GDEL_DEVICE_POOL=keep bench "$@"; }
+
 # bench with runs of small flip iterations in one team (GDEL_TEAM_LOOP=1, session 71's
 # study): bench_loop NAME LIMIT ARGS
 bench_loop() { GDEL_TEAM_LOOP=1 bench "$@"; }
@@ -2161,6 +2165,14 @@ for (_, r, s), n in zip(items, names):
   s72b)  # session 72: gpu_gflip3d in two steps, the knobs' tests first (≈ 360 s)
     step gpu_gflip3d_knobs 280 "$tbin/gpu_gflip3d" --gtest_filter='*ChangesNothing*:*LogFlush*'
     step gpu_gflip3d_rest 280 "$tbin/gpu_gflip3d" --gtest_filter='-*ChangesNothing*:*LogFlush*'
+    ;;
+  s72c)  # session 72: one device pool kept for the process (GDEL_DEVICE_POOL=keep) against a pool per call (the default), uniform 10^7 x3 and 10^6 x2 alternating; its step profile at 10^7 (two runs: the second finds its memory mapped); uniform 10^8 twice in one process with it; gpu_hostile (out of memory), gpu_gdel3d and gpu_parallel with it (≈ 200 s)
+    ab s72c 3 2 bench bench_keep
+    GDEL_DEVICE_POOL=keep GDEL_PROFILE=1 bench s72c_prof7k 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 2
+    GDEL_DEVICE_POOL=keep bench s72c_e8k 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 2
+    export GDEL_DEVICE_POOL=keep
+    gpu_tests gpu_hostile gpu_gdel3d gpu_parallel
+    unset GDEL_DEVICE_POOL
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"

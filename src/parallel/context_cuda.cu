@@ -5,8 +5,53 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <mutex>
 
 namespace gdel::par {
+
+namespace {
+// A pool on the device that keeps what is freed (release threshold: no limit).
+cudaError_t new_pool(int device, cudaMemPool_t* pool) {
+  cudaMemPoolProps props{};
+  props.allocType = cudaMemAllocationTypePinned;
+  props.handleTypes = cudaMemHandleTypeNone;
+  props.location.type = cudaMemLocationTypeDevice;
+  props.location.id = device;
+  cudaError_t e = cudaMemPoolCreate(pool, &props);
+  if (e != cudaSuccess) return e;
+  std::uint64_t keep = ~std::uint64_t(0);  // keep everything freed until the pool ends
+  e = cudaMemPoolSetAttribute(*pool, cudaMemPoolAttrReleaseThreshold, &keep);
+  if (e != cudaSuccess) cudaMemPoolDestroy(*pool);
+  return e;
+}
+
+// GDEL_DEVICE_POOL=keep (a study): one such pool per device for the whole process,
+// shared by every context on it and never destroyed, so that a call's memory is already
+// mapped when the next call asks for it (a context's own pool maps its peak anew at
+// every call). Trimmed, like a context's own, when an allocation fails.
+std::mutex kept_mutex;
+std::map<int, cudaMemPool_t> kept_pools;
+
+cudaError_t kept_pool(int device, cudaMemPool_t* pool) {
+  std::lock_guard<std::mutex> lock(kept_mutex);
+  auto it = kept_pools.find(device);
+  if (it == kept_pools.end()) {
+    cudaMemPool_t p = nullptr;
+    const cudaError_t e = new_pool(device, &p);
+    if (e != cudaSuccess) return e;
+    it = kept_pools.emplace(device, p).first;
+  }
+  *pool = it->second;
+  return cudaSuccess;
+}
+
+bool is_kept(int device, cudaMemPool_t pool) {
+  std::lock_guard<std::mutex> lock(kept_mutex);
+  auto it = kept_pools.find(device);
+  return it != kept_pools.end() && it->second == pool;
+}
+}  // namespace
 
 Context<Cuda>::Context(int device) : device_(device) {
   int count = 0;
@@ -20,19 +65,12 @@ Context<Cuda>::Context(int device) : device_(device) {
   GDEL_CUDA_CHECK(cudaDeviceGetAttribute(&sm_count_, cudaDevAttrMultiProcessorCount, device_));
   const char* kind = std::getenv("GDEL_DEVICE_POOL");
   if (!(kind && std::strcmp(kind, "default") == 0)) {
-    cudaMemPoolProps props{};
-    props.allocType = cudaMemAllocationTypePinned;
-    props.handleTypes = cudaMemHandleTypeNone;
-    props.location.type = cudaMemLocationTypeDevice;
-    props.location.id = device_;
-    cudaError_t e = cudaMemPoolCreate(&pool_, &props);
+    const cudaError_t e = (kind && std::strcmp(kind, "keep") == 0) ? kept_pool(device_, &pool_) : new_pool(device_, &pool_);
     if (e != cudaSuccess) {
       cudaStreamDestroy(stream_);
       stream_ = nullptr;
       GDEL_CUDA_CHECK(e);
     }
-    std::uint64_t keep = ~std::uint64_t(0);  // keep everything freed until the context ends
-    GDEL_CUDA_CHECK(cudaMemPoolSetAttribute(pool_, cudaMemPoolAttrReleaseThreshold, &keep));
   }
   if (prof_on_) profile_start();
 }
@@ -44,7 +82,7 @@ Context<Cuda>::~Context() {
   }
   // Allocations still outstanding (none, when every Buffer died first) would keep the
   // pool's memory until they are freed; the driver destroys the pool then.
-  if (pool_) cudaMemPoolDestroy(pool_);
+  if (pool_ && !is_kept(device_, pool_)) cudaMemPoolDestroy(pool_);
   for (cudaEvent_t e : prof_events_) cudaEventDestroy(e);
 }
 
