@@ -24,8 +24,10 @@ inline void device_memory_precheck(par::Context<par::Cuda>& ctx, std::int64_t n,
   if (lim != 0 && need > lim)
     throw OutOfDeviceMemory(head + "more than the limit of " + std::to_string(lim) + " (Options::device_memory_limit)",
                             need, lim);
-  std::size_t free_b = 0, total_b = 0;
-  GDEL_CUDA_CHECK(cudaMemGetInfo(&free_b, &total_b));
+  // free: the driver's, and what the context's pool holds unused (a pool kept across
+  // calls, GDEL_DEVICE_POOL=keep, may hold a whole earlier run's peak)
+  std::size_t free_b = ctx.free_bytes(), total_b = 0, driver_free = 0;
+  GDEL_CUDA_CHECK(cudaMemGetInfo(&driver_free, &total_b));
   if (need > free_b)
     throw OutOfDeviceMemory(head + std::to_string(free_b) + " free of " + std::to_string(total_b), need, free_b);
 }
