@@ -46,6 +46,31 @@ def cuda_available() -> bool:
     return _core.cuda_device_available()
 
 
+def keep_device_memory(nbytes: int) -> None:
+    """Keep up to ``nbytes`` of the device memory gdel's GPU calls free, for later calls.
+
+    By default (``0``) every GPU call maps the memory it needs and gives all of it back
+    when it returns. With ``nbytes > 0`` the calls on a device share one memory pool that
+    keeps up to ``nbytes`` of it after each call, so that the next call finds it mapped
+    (uniform 10^7 points on an H100: 5-19 ms of 0.44 s). Other users of the GPU (PyTorch,
+    CuPy) see the kept memory as taken, as gdel sees their caches. Arrays returned to
+    you never come from the pool. Process-wide. Without CUDA the setting is only recorded.
+    """
+    if isinstance(nbytes, bool) or not isinstance(nbytes, int) or nbytes < 0:
+        raise ValueError(f"keep_device_memory: nbytes must be an int >= 0, got {nbytes!r}")
+    _core.keep_device_memory(min(nbytes, 2**64 - 1))
+
+
+def release_device_memory() -> None:
+    """Give the device memory kept between calls (``keep_device_memory``) back now."""
+    _core.release_device_memory()
+
+
+def kept_device_memory_bound() -> int:
+    """The ``keep_device_memory`` setting: bytes kept between calls at most (0: none)."""
+    return int(_core.kept_device_memory_bound())
+
+
 __all__ = [
     "ALGORITHMS",
     "DEVICES",
@@ -59,5 +84,8 @@ __all__ = [
     "check",
     "cuda_available",
     "delaunay",
+    "keep_device_memory",
+    "kept_device_memory_bound",
     "regular",
+    "release_device_memory",
 ]

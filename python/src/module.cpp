@@ -16,6 +16,7 @@
 
 #include "arrays.hpp"
 #include "gdel/delaunay.hpp"
+#include "gdel/device_memory.hpp"
 #include "gdel/errors.hpp"
 #include "gdel/options.hpp"
 #include "gdel/regular.hpp"
@@ -400,5 +401,9 @@ NB_MODULE(_core, m) {
   m.def("built_with_cuda", &gdel::built_with_cuda, "True when this build contains the CUDA backend.");
   m.def("cuda_device_available", &gdel::cuda_device_available,
         "True when this build has the CUDA backend and a CUDA device is visible.");
+  m.def("keep_device_memory", &gdel::keep_device_memory, "nbytes"_a,
+        "Keep up to nbytes of freed device memory between calls (gdel/device_memory.hpp); 0: none.");
+  m.def("release_device_memory", &gdel::release_device_memory, "Give the device memory kept between calls back now.");
+  m.def("kept_device_memory_bound", &gdel::kept_device_memory_bound, "The bytes kept between calls at most (0: none).");
   m.def("_raise", &py_raise, "kind"_a, "message"_a, "Test seam: throws the named gdel C++ exception.");
 }

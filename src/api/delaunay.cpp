@@ -1,5 +1,6 @@
 // gdel::delaunay: argument checks, backend dispatch, canonical order, verification.
 // The CPU backend is instantiated here, the CUDA one in delaunay_cuda.cu.
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <sstream>
@@ -7,6 +8,7 @@
 #include "api/delaunay_impl.hpp"
 #include "api/validate.hpp"
 #include "core/backend_select.hpp"
+#include "gdel/device_memory.hpp"
 #include "gdel/verify.hpp"
 #include "mesh/canonical.hpp"
 
@@ -168,6 +170,13 @@ DeviceTriangulation delaunay_device(const DevicePoints& points, const Options& o
 
 #if !defined(GDEL_HAVE_CUDA)
 void device_free(void*, int) noexcept {}  // nothing is ever allocated without CUDA
+// gdel/device_memory.hpp without CUDA: the setting is recorded, nothing is kept
+namespace {
+std::atomic<std::size_t> kept_setting{0};
+}
+void keep_device_memory(std::size_t bytes) noexcept { kept_setting.store(bytes); }
+void release_device_memory() noexcept {}
+std::size_t kept_device_memory_bound() noexcept { return kept_setting.load(); }
 DeviceArray<double> copy_to_device(std::span<const double>, int) {
   throw BackendUnavailable("copy_to_device: this build of gdel has no CUDA support (rebuild with the cuda preset)");
 }

@@ -1,7 +1,9 @@
 // The CUDA context: device selection, one stream, device properties.
+#include "gdel/device_memory.hpp"
 #include "parallel/backend.hpp"
 #include "parallel/check.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -26,12 +28,23 @@ cudaError_t new_pool(int device, cudaMemPool_t* pool) {
   return e;
 }
 
-// GDEL_DEVICE_POOL=keep (a study): one such pool per device for the whole process,
-// shared by every context on it and never destroyed, so that a call's memory is already
-// mapped when the next call asks for it (a context's own pool maps its peak anew at
-// every call). Trimmed, like a context's own, when an allocation fails.
+// The pools shared across calls (gdel/device_memory.hpp): one per device, made when a
+// context first asks for it and never destroyed; their memory is trimmed to kept_bound
+// when a context on them ends, and to 0 when released (or on a failed allocation, like a
+// context's own pool). kept_bound 0: every context makes a pool of its own, which keeps
+// what is freed only until the context ends.
 std::mutex kept_mutex;
 std::map<int, cudaMemPool_t> kept_pools;
+std::atomic<std::size_t> kept_bound{0};
+std::once_flag kept_env_once;
+
+// GDEL_DEVICE_POOL=keep: no bound from the start (read before the first use of the bound)
+void read_kept_env() {
+  std::call_once(kept_env_once, [] {
+    const char* k = std::getenv("GDEL_DEVICE_POOL");
+    if (k && std::strcmp(k, "keep") == 0) kept_bound.store(~std::size_t(0));
+  });
+}
 
 cudaError_t kept_pool(int device, cudaMemPool_t* pool) {
   std::lock_guard<std::mutex> lock(kept_mutex);
@@ -51,6 +64,14 @@ bool is_kept(int device, cudaMemPool_t pool) {
   auto it = kept_pools.find(device);
   return it != kept_pools.end() && it->second == pool;
 }
+
+// Every shared pool down to `bytes` of reserved memory (only memory no call is using is
+// given back; driver errors are dropped: gdel/device_memory.hpp's calls report none).
+void trim_kept(std::size_t bytes) {
+  std::lock_guard<std::mutex> lock(kept_mutex);
+  for (const auto& dp : kept_pools) cudaMemPoolTrimTo(dp.second, bytes);
+  cudaGetLastError();
+}
 }  // namespace
 
 Context<Cuda>::Context(int device) : device_(device) {
@@ -65,7 +86,8 @@ Context<Cuda>::Context(int device) : device_(device) {
   GDEL_CUDA_CHECK(cudaDeviceGetAttribute(&sm_count_, cudaDevAttrMultiProcessorCount, device_));
   const char* kind = std::getenv("GDEL_DEVICE_POOL");
   if (!(kind && std::strcmp(kind, "default") == 0)) {
-    const cudaError_t e = (kind && std::strcmp(kind, "keep") == 0) ? kept_pool(device_, &pool_) : new_pool(device_, &pool_);
+    read_kept_env();
+    const cudaError_t e = kept_bound.load() > 0 ? kept_pool(device_, &pool_) : new_pool(device_, &pool_);
     if (e != cudaSuccess) {
       cudaStreamDestroy(stream_);
       stream_ = nullptr;
@@ -82,7 +104,11 @@ Context<Cuda>::~Context() {
   }
   // Allocations still outstanding (none, when every Buffer died first) would keep the
   // pool's memory until they are freed; the driver destroys the pool then.
-  if (pool_ && !is_kept(device_, pool_)) cudaMemPoolDestroy(pool_);
+  // A shared pool keeps up to the bound of what is free in it now.
+  if (pool_) {
+    if (is_kept(device_, pool_)) cudaMemPoolTrimTo(pool_, kept_bound.load());
+    else cudaMemPoolDestroy(pool_);
+  }
   for (cudaEvent_t e : prof_events_) cudaEventDestroy(e);
 }
 
@@ -134,3 +160,20 @@ ProfileTotals Context<Cuda>::profile_report() {
 void Context<Cuda>::synchronize() { GDEL_CUDA_CHECK(cudaStreamSynchronize(stream_)); }
 
 }  // namespace gdel::par
+
+namespace gdel {
+
+void keep_device_memory(std::size_t bytes) noexcept {
+  par::read_kept_env();
+  par::kept_bound.store(bytes);
+  par::trim_kept(bytes);
+}
+
+void release_device_memory() noexcept { par::trim_kept(0); }
+
+std::size_t kept_device_memory_bound() noexcept {
+  par::read_kept_env();
+  return par::kept_bound.load();
+}
+
+}  // namespace gdel

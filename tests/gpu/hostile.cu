@@ -1,6 +1,11 @@
 #include "common/expect_error.hpp"
 #include "common/hostile_cases.hpp"
+#include "gdel/device_memory.hpp"
 #include "gdel/regular.hpp"
+
+#include <cuda_runtime.h>
+
+#include <thread>
 TEST(HostileGpu, PeersReportedFailures) { gdel::test::hostile_cases(gdel::Backend::Cuda); }
 // With canonical_order both backends give bitwise identical arrays (issue 8: determinism).
 TEST(HostileGpu, SameArraysAsTheCpuBackend) {
@@ -81,4 +86,63 @@ TEST(HostileGpu, MemoryEstimateIsCheckedBeforeStarting) {
   o.backend = gdel::Backend::Cuda;
   o.device_memory_limit = gdel::estimated_device_bytes(n, gdel::Algorithm::Auto, true) - 1;
   EXPECT_THROW(gdel::regular(pts, w, o), gdel::OutOfDeviceMemory);
+}
+// Device memory kept between calls (gdel/device_memory.hpp): with no bound the memory a
+// call freed stays mapped after it (the driver's free memory drops by at least half the
+// call's peak) and the next calls, two at once included, give the same triangulation;
+// a bound trims what is kept to under it (64 MiB of slack for the driver's own
+// allocations) at once and after every call; release_device_memory() and keep_device_memory(0) give it
+// all back.
+TEST(HostileGpu, KeptDeviceMemoryIsBoundedAndReleased) {
+  const std::size_t before = gdel::kept_device_memory_bound();
+  auto pts = gdel::gen::generate(gdel::gen::Distribution::Uniform, 1000000, 9);
+  gdel::Options o;
+  o.backend = gdel::Backend::Cuda;
+  o.canonical_order = true;
+  auto free_now = [] {
+    std::size_t f = 0, t = 0;
+    EXPECT_EQ(cudaMemGetInfo(&f, &t), cudaSuccess);
+    return static_cast<double>(f);
+  };
+  const double slack = 64.0 * (1 << 20);
+  gdel::keep_device_memory(0);
+  const auto ref = gdel::delaunay(pts, o);
+  gdel::test::expect_exact_delaunay(pts, ref, gdel::Backend::Cuda);
+  const double base = free_now();  // (after a first call: the kernels are loaded)
+  const double peak = static_cast<double>(ref.stats.peak_bytes);
+  EXPECT_EQ(gdel::delaunay(pts, o).tets, ref.tets);
+  EXPECT_GT(free_now() + slack, base);  // nothing kept by default
+
+  gdel::keep_device_memory(~std::size_t(0));
+  EXPECT_EQ(gdel::kept_device_memory_bound(), ~std::size_t(0));
+  const auto a = gdel::delaunay(pts, o);
+  EXPECT_LT(free_now(), base - 0.5 * peak) << "peak " << peak;
+  const auto b = gdel::delaunay(pts, o);
+  EXPECT_EQ(a.tets, ref.tets);
+  EXPECT_EQ(b.tets, ref.tets);
+  EXPECT_EQ(b.neighbors, ref.neighbors);
+  {  // two calls at once on the shared pool
+    gdel::Triangulation t1, t2;
+    std::thread th([&] { t1 = gdel::delaunay(pts, o); });
+    t2 = gdel::delaunay(pts, o);
+    th.join();
+    EXPECT_EQ(t1.tets, ref.tets);
+    EXPECT_EQ(t2.tets, ref.tets);
+  }
+  const double bound = 128.0 * (1 << 20);
+  gdel::keep_device_memory(static_cast<std::size_t>(bound));  // trims now
+  EXPECT_GT(free_now() + bound + slack, base);
+  const auto c = gdel::delaunay(pts, o);  // and after the call
+  EXPECT_EQ(c.tets, ref.tets);
+  EXPECT_GT(free_now() + bound + slack, base);
+
+  gdel::keep_device_memory(~std::size_t(0));
+  (void)gdel::delaunay(pts, o);
+  gdel::release_device_memory();
+  EXPECT_GT(free_now() + slack, base);
+  EXPECT_EQ(gdel::kept_device_memory_bound(), ~std::size_t(0));  // the setting stays
+  (void)gdel::delaunay(pts, o);
+  gdel::keep_device_memory(0);
+  EXPECT_GT(free_now() + slack, base);
+  gdel::keep_device_memory(before);
 }

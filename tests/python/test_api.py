@@ -482,6 +482,31 @@ def test_public_names():
         assert not gdel.cuda_available()
 
 
+def test_kept_device_memory_setting():
+    before = gdel.kept_device_memory_bound()
+    p = uniform(3000, 5)
+    ref = gdel.delaunay(p, device="cpu")
+    try:
+        gdel.keep_device_memory(1 << 30)
+        assert gdel.kept_device_memory_bound() == 1 << 30
+        gdel.keep_device_memory(2**70)  # no bound (clamped to the largest size_t)
+        assert gdel.kept_device_memory_bound() == 2**64 - 1
+        for bad in (-1, 1.5, True, "1"):
+            with pytest.raises(ValueError, match="nbytes"):
+                gdel.keep_device_memory(bad)
+        assert gdel.kept_device_memory_bound() == 2**64 - 1
+        # the same triangulation with memory kept (on the GPU where there is one), twice
+        for _ in range(2):
+            tri = gdel.delaunay(p)
+            assert sorted_rows(tri.simplices) == sorted_rows(ref.simplices)
+        gdel.release_device_memory()
+        assert gdel.kept_device_memory_bound() == 2**64 - 1  # the setting stays
+        gdel.keep_device_memory(0)
+        assert gdel.kept_device_memory_bound() == 0
+    finally:
+        gdel.keep_device_memory(before)
+
+
 def test_readme_python_example_runs(capsys):
     readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
     section = readme.split("\n## Python\n", 1)[1]
