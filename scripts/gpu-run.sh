@@ -2174,7 +2174,7 @@ for (_, r, s), n in zip(items, names):
     gpu_tests gpu_hostile gpu_gdel3d gpu_parallel
     unset GDEL_DEVICE_POOL
     ;;
-  s73a)  # session 73: the memory precheck counting the pool's unused memory, with the kept pool (GDEL_DEVICE_POOL=keep): uniform 10^8 twice in one process (session 72: the second run refused); then default against keep, uniform 10^7 x3 and 10^6 x3; gpu_hostile with keep (≈ 230 s)
+  s73a)  # session 73: the memory precheck counting the pool's unused memory, with the kept pool (GDEL_DEVICE_POOL=keep): uniform 10^8 twice in one process (session 72: the second run refused); then default against keep, uniform 10^7 x3 and 10^6 x3; gpu_hostile with keep (from commit 6a8dd99 on it has KeptDeviceMemoryIsBoundedAndReleased, which sets the bound itself through gdel::keep_device_memory) (≈ 230 s)
     GDEL_DEVICE_POOL=keep bench s73a_e8k 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 2
     ab s73a 3 3 bench bench_keep
     GDEL_DEVICE_POOL=keep gpu_tests gpu_hostile
