@@ -146,6 +146,10 @@ bench_log05() { GDEL_FLIP_LOG_RECORDS=5000000 bench "$@"; }
 # study: later calls find their memory mapped): bench_keep NAME LIMIT ARGS
 bench_keep() { GDEL_DEVICE_POOL=keep bench "$@"; }
 
+# bench with the pool mapped at once to the memory estimate (GDEL_POOL_PRIME=1, session
+# 73's study): bench_prime NAME LIMIT ARGS
+bench_prime() { GDEL_POOL_PRIME=1 bench "$@"; }
+
 # bench with runs of small flip iterations in one team (GDEL_TEAM_LOOP=1, session 71's
 # study): bench_loop NAME LIMIT ARGS
 bench_loop() { GDEL_TEAM_LOOP=1 bench "$@"; }
@@ -2177,6 +2181,13 @@ for (_, r, s), n in zip(items, names):
   s73a)  # session 73: the memory precheck counting the pool's unused memory, with the kept pool (GDEL_DEVICE_POOL=keep): uniform 10^8 twice in one process (session 72: the second run refused); then default against keep, uniform 10^7 x3 and 10^6 x3; gpu_hostile with keep (from commit 6a8dd99 on it has KeptDeviceMemoryIsBoundedAndReleased, which sets the bound itself through gdel::keep_device_memory) (≈ 230 s)
     GDEL_DEVICE_POOL=keep bench s73a_e8k 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 2
     ab s73a 3 3 bench bench_keep
+    GDEL_DEVICE_POOL=keep gpu_tests gpu_hostile
+    ;;
+  s74a)  # session 74 (binaries of HEAD from 6bb39a0 on, rebuilt: no build folder is kept between sessions): plan s73a's steps (uniform 10^8 twice with the kept pool; gpu_hostile with it, KeptDeviceMemoryIsBoundedAndReleased included), and session 73's study GDEL_POOL_PRIME=1 (the pool mapped to the estimate at once) beside the default and keep, uniform 10^7 x3 and 10^6 x2, with a profile of its first run at 10^7 (≈ 330 s)
+    GDEL_DEVICE_POOL=keep bench s74a_e8k 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 2
+    ab s74a 3 2 bench bench_keep bench_prime
+    GDEL_POOL_PRIME=1 GDEL_PROFILE=1 bench s74a_prof7p 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
+    GDEL_PROFILE=1 bench s74a_prof7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_DEVICE_POOL=keep gpu_tests gpu_hostile
     ;;
   cmd)

@@ -1,4 +1,5 @@
 #include "common/expect_error.hpp"
+#include "common/gflip_cases.hpp"
 #include "common/hostile_cases.hpp"
 #include "gdel/device_memory.hpp"
 #include "gdel/regular.hpp"
@@ -145,4 +146,20 @@ TEST(HostileGpu, KeptDeviceMemoryIsBoundedAndReleased) {
   gdel::keep_device_memory(0);
   EXPECT_GT(free_now() + slack, base);
   gdel::keep_device_memory(before);
+}
+// GDEL_POOL_PRIME=1 (a study: the call's pool maps the memory estimate at once) changes
+// no flip and no output (gflip3d on the flip studies' inputs), and no prime is made past
+// a device_memory_limit (the precheck refuses first).
+TEST(HostileGpu, PoolPrimeChangesNothing) {
+  gdel::test::knob_same_output_cases(gdel::Backend::Cuda, 200000, "GDEL_POOL_PRIME", "1");
+  auto pts = gdel::gen::generate(gdel::gen::Distribution::Uniform, 300000, 10);
+  gdel::Options o;
+  o.backend = gdel::Backend::Cuda;
+  o.device_memory_limit = std::size_t(4) << 20;
+  ASSERT_EQ(::setenv("GDEL_POOL_PRIME", "1", 1), 0);
+  EXPECT_THROW((void)gdel::delaunay(pts, o), gdel::OutOfDeviceMemory);
+  o.device_memory_limit = 0;
+  const auto t = gdel::delaunay(pts, o);
+  ::unsetenv("GDEL_POOL_PRIME");
+  gdel::test::expect_exact_delaunay(pts, t, gdel::Backend::Cuda);
 }
