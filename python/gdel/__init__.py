@@ -18,6 +18,8 @@ triangulation; MemoryError when device memory runs out (attributes ``needed`` an
 See docs/python.md for the output contract.
 """
 
+import operator
+
 from . import _core
 from ._check import CheckReport, check
 from ._core import BackendUnavailableError, DegenerateInputError, GdelError
@@ -56,9 +58,13 @@ def keep_device_memory(nbytes: int) -> None:
     CuPy) see the kept memory as taken, as gdel sees their caches. Arrays returned to
     you never come from the pool. Process-wide. Without CUDA the setting is only recorded.
     """
-    if isinstance(nbytes, bool) or not isinstance(nbytes, int) or nbytes < 0:
+    try:
+        n = None if isinstance(nbytes, bool) else operator.index(nbytes)  # numpy ints too
+    except TypeError:
+        n = None
+    if n is None or n < 0:
         raise ValueError(f"keep_device_memory: nbytes must be an int >= 0, got {nbytes!r}")
-    _core.keep_device_memory(min(nbytes, 2**64 - 1))
+    _core.keep_device_memory(min(n, 2**64 - 1))
 
 
 def release_device_memory() -> None:

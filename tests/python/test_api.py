@@ -489,6 +489,8 @@ def test_kept_device_memory_setting():
     try:
         gdel.keep_device_memory(1 << 30)
         assert gdel.kept_device_memory_bound() == 1 << 30
+        gdel.keep_device_memory(np.int64(1 << 20))
+        assert gdel.kept_device_memory_bound() == 1 << 20
         gdel.keep_device_memory(2**70)  # no bound (clamped to the largest size_t)
         assert gdel.kept_device_memory_bound() == 2**64 - 1
         for bad in (-1, 1.5, True, "1"):
