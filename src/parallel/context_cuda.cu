@@ -2,6 +2,7 @@
 #include "gdel/device_memory.hpp"
 #include "parallel/backend.hpp"
 #include "parallel/check.hpp"
+#include "parallel/device_pool.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -125,6 +126,19 @@ std::size_t Context<Cuda>::free_bytes() {
   GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(pool_, cudaMemPoolAttrReservedMemCurrent, &reserved));
   GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(pool_, cudaMemPoolAttrUsedMemCurrent, &used));
   return free_b + static_cast<std::size_t>(reserved > used ? reserved - used : 0);
+}
+
+PoolBytes kept_pool_bytes(int device) {
+  std::lock_guard<std::mutex> lock(kept_mutex);
+  PoolBytes b;
+  auto it = kept_pools.find(device);
+  if (it == kept_pools.end()) return b;
+  std::uint64_t reserved = 0, used = 0;
+  GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(it->second, cudaMemPoolAttrReservedMemCurrent, &reserved));
+  GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(it->second, cudaMemPoolAttrUsedMemCurrent, &used));
+  b.reserved = static_cast<std::size_t>(reserved);
+  b.used = static_cast<std::size_t>(used);
+  return b;
 }
 
 void Context<Cuda>::record_event() {

@@ -3,6 +3,7 @@
 #include "common/hostile_cases.hpp"
 #include "gdel/device_memory.hpp"
 #include "gdel/regular.hpp"
+#include "parallel/device_pool.hpp"
 
 #include <cuda_runtime.h>
 
@@ -88,37 +89,42 @@ TEST(HostileGpu, MemoryEstimateIsCheckedBeforeStarting) {
   o.device_memory_limit = gdel::estimated_device_bytes(n, gdel::Algorithm::Auto, true) - 1;
   EXPECT_THROW(gdel::regular(pts, w, o), gdel::OutOfDeviceMemory);
 }
-// Device memory kept between calls (gdel/device_memory.hpp): with no bound the memory a
-// call freed stays mapped after it (the driver's free memory drops by at least half the
-// call's peak) and the next calls, two at once included, give the same triangulation;
-// a bound trims what is kept to under it (64 MiB of slack for the driver's own
-// allocations) at once and after every call; release_device_memory() and keep_device_memory(0) give it
-// all back.
+// Device memory kept between calls (gdel/device_memory.hpp), read on the shared pool
+// itself (par::kept_pool_bytes) and on the driver: keep_device_memory(0) leaves the
+// pool empty (also after the earlier tests of a GDEL_DEVICE_POOL=keep run) and a call
+// then does not touch it; with no bound a call leaves at least half its peak reserved
+// there and nothing in use, the next calls (two at once included) reuse it and give the
+// same triangulation; a bound trims the pool under it, at once and after each call;
+// release_device_memory() empties it and the driver gets that memory back; the setting
+// stays until keep_device_memory(0).
 TEST(HostileGpu, KeptDeviceMemoryIsBoundedAndReleased) {
   const std::size_t before = gdel::kept_device_memory_bound();
   auto pts = gdel::gen::generate(gdel::gen::Distribution::Uniform, 1000000, 9);
   gdel::Options o;
   o.backend = gdel::Backend::Cuda;
   o.canonical_order = true;
+  auto pool = [] { return gdel::par::kept_pool_bytes(0); };
   auto free_now = [] {
     std::size_t f = 0, t = 0;
     EXPECT_EQ(cudaMemGetInfo(&f, &t), cudaSuccess);
     return static_cast<double>(f);
   };
-  const double slack = 64.0 * (1 << 20);
   gdel::keep_device_memory(0);
+  EXPECT_EQ(pool().used, 0u);
+  EXPECT_EQ(pool().reserved, 0u);
   const auto ref = gdel::delaunay(pts, o);
   gdel::test::expect_exact_delaunay(pts, ref, gdel::Backend::Cuda);
-  const double base = free_now();  // (after a first call: the kernels are loaded)
   const double peak = static_cast<double>(ref.stats.peak_bytes);
-  EXPECT_EQ(gdel::delaunay(pts, o).tets, ref.tets);
-  EXPECT_GT(free_now() + slack, base);  // nothing kept by default
+  EXPECT_EQ(pool().reserved, 0u);  // a pool of the call's own
 
   gdel::keep_device_memory(~std::size_t(0));
   EXPECT_EQ(gdel::kept_device_memory_bound(), ~std::size_t(0));
   const auto a = gdel::delaunay(pts, o);
-  EXPECT_LT(free_now(), base - 0.5 * peak) << "peak " << peak;
+  const gdel::par::PoolBytes after_a = pool();
+  EXPECT_GE(static_cast<double>(after_a.reserved), 0.5 * peak) << "peak " << peak;
+  EXPECT_EQ(after_a.used, 0u);
   const auto b = gdel::delaunay(pts, o);
+  EXPECT_LE(static_cast<double>(pool().reserved), 1.5 * static_cast<double>(after_a.reserved));
   EXPECT_EQ(a.tets, ref.tets);
   EXPECT_EQ(b.tets, ref.tets);
   EXPECT_EQ(b.neighbors, ref.neighbors);
@@ -129,22 +135,27 @@ TEST(HostileGpu, KeptDeviceMemoryIsBoundedAndReleased) {
     th.join();
     EXPECT_EQ(t1.tets, ref.tets);
     EXPECT_EQ(t2.tets, ref.tets);
+    EXPECT_EQ(pool().used, 0u);
   }
-  const double bound = 128.0 * (1 << 20);
-  gdel::keep_device_memory(static_cast<std::size_t>(bound));  // trims now
-  EXPECT_GT(free_now() + bound + slack, base);
+  const std::size_t bound = std::size_t(128) << 20;
+  gdel::keep_device_memory(bound);  // trims now
+  EXPECT_LE(pool().reserved, bound);
   const auto c = gdel::delaunay(pts, o);  // and after the call
   EXPECT_EQ(c.tets, ref.tets);
-  EXPECT_GT(free_now() + bound + slack, base);
+  EXPECT_LE(pool().reserved, bound);
 
   gdel::keep_device_memory(~std::size_t(0));
   (void)gdel::delaunay(pts, o);
+  const double kept = static_cast<double>(pool().reserved), free_kept = free_now();
+  EXPECT_GE(kept, 0.5 * peak);
   gdel::release_device_memory();
-  EXPECT_GT(free_now() + slack, base);
+  EXPECT_EQ(pool().reserved, 0u);
+  EXPECT_GE(free_now(), free_kept + 0.5 * kept);  // the driver has it back
   EXPECT_EQ(gdel::kept_device_memory_bound(), ~std::size_t(0));  // the setting stays
   (void)gdel::delaunay(pts, o);
+  EXPECT_GE(static_cast<double>(pool().reserved), 0.5 * peak);
   gdel::keep_device_memory(0);
-  EXPECT_GT(free_now() + slack, base);
+  EXPECT_EQ(pool().reserved, 0u);
   gdel::keep_device_memory(before);
 }
 // GDEL_POOL_PRIME=1 (a study: the call's pool maps the memory estimate at once) changes
