@@ -2190,11 +2190,12 @@ for (_, r, s), n in zip(items, names):
     GDEL_PROFILE=1 bench s74a_prof7 60 --dist uniform --n 10000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_DEVICE_POOL=keep gpu_tests gpu_hostile
     ;;
-  s74b)  # session 73's second call: HostileGpu.KeptDeviceMemoryIsBoundedAndReleased read on the shared pool itself (gpu_hostile of HOSTILE_DIR, default build/s74b), alone, and after the tests before it with GDEL_DEVICE_POOL=keep; then the prime (GDEL_POOL_PRIME=1) against the default, uniform 10^7 x2 and 10^6 x4 (≈ 150 s)
+  s74b)  # session 73's second call: HostileGpu.KeptDeviceMemoryIsBoundedAndReleased read on the shared pool itself (gpu_hostile of HOSTILE_DIR, default build/s74b), alone, and after the tests before it with GDEL_DEVICE_POOL=keep; then the prime (GDEL_POOL_PRIME=1) against the default, uniform 10^7 x2 and 10^6 x4, and uniform 10^8 with it (≈ 200 s)
     hdir=${HOSTILE_DIR:-build/s74b}
     step s74b_kept 120 "$hdir/gpu_hostile" --gtest_filter='*KeptDevice*'
     GDEL_DEVICE_POOL=keep step s74b_kept_after 200 "$hdir/gpu_hostile" --gtest_filter='*Peers*:*SameArrays*:*TwentyMillion*:*OutOfDevice*:*MemoryEstimate*:*KeptDevice*:*PoolPrime*'
     ab s74b 2 4 bench bench_prime
+    GDEL_POOL_PRIME=1 bench s74b_e8p 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
