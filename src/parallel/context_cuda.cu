@@ -66,12 +66,22 @@ bool is_kept(int device, cudaMemPool_t pool) {
   return it != kept_pools.end() && it->second == pool;
 }
 
-// Every shared pool down to `bytes` of reserved memory (only memory no call is using is
-// given back; driver errors are dropped: gdel/device_memory.hpp's calls report none).
+// Pool p down to `bytes` of reserved memory, only where it holds more (only memory no
+// call is using is given back). cudaMemPoolTrimTo itself is not called with a bound at
+// or above what the pool holds: called with SIZE_MAX (no bound) it emptied the pool on
+// the H100 (driver 580.159.04; bench/RESULTS.md, session 73). Driver errors are dropped:
+// gdel/device_memory.hpp's calls report none.
+void trim_to(cudaMemPool_t p, std::size_t bytes) {
+  std::uint64_t reserved = 0;
+  if (cudaMemPoolGetAttribute(p, cudaMemPoolAttrReservedMemCurrent, &reserved) == cudaSuccess && reserved > bytes)
+    cudaMemPoolTrimTo(p, bytes);
+  cudaGetLastError();
+}
+
+// Every shared pool down to `bytes` (trim_to).
 void trim_kept(std::size_t bytes) {
   std::lock_guard<std::mutex> lock(kept_mutex);
-  for (const auto& dp : kept_pools) cudaMemPoolTrimTo(dp.second, bytes);
-  cudaGetLastError();
+  for (const auto& dp : kept_pools) trim_to(dp.second, bytes);
 }
 }  // namespace
 
@@ -107,7 +117,7 @@ Context<Cuda>::~Context() {
   // pool's memory until they are freed; the driver destroys the pool then.
   // A shared pool keeps up to the bound of what is free in it now.
   if (pool_) {
-    if (is_kept(device_, pool_)) cudaMemPoolTrimTo(pool_, kept_bound.load());
+    if (is_kept(device_, pool_)) trim_to(pool_, kept_bound.load());
     else cudaMemPoolDestroy(pool_);
   }
   for (cudaEvent_t e : prof_events_) cudaEventDestroy(e);
