@@ -20,7 +20,9 @@
 // The environment variable GDEL_DEVICE_POOL=keep starts a process with no bound (as
 // keep_device_memory(SIZE_MAX)); a call to keep_device_memory() overrides it.
 // Process-wide and thread-safe; a call running in another thread keeps what it uses.
-// Both are no-ops in a build without CUDA. Errors of the driver are not reported.
+// In a build without CUDA the setting is only recorded (kept_device_memory_bound()
+// returns it) and release_device_memory() does nothing. Errors of the driver are not
+// reported.
 #pragma once
 
 #include <cstddef>
