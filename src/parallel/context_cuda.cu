@@ -60,6 +60,16 @@ cudaError_t kept_pool(int device, cudaMemPool_t* pool) {
   return cudaSuccess;
 }
 
+// What pool p holds: reserved from the driver, and of that in use.
+cudaError_t read_pool(cudaMemPool_t p, PoolBytes* b) {
+  std::uint64_t reserved = 0, used = 0;
+  cudaError_t e = cudaMemPoolGetAttribute(p, cudaMemPoolAttrReservedMemCurrent, &reserved);
+  if (e == cudaSuccess) e = cudaMemPoolGetAttribute(p, cudaMemPoolAttrUsedMemCurrent, &used);
+  b->reserved = static_cast<std::size_t>(reserved);
+  b->used = static_cast<std::size_t>(used);
+  return e;
+}
+
 bool is_kept(int device, cudaMemPool_t pool) {
   std::lock_guard<std::mutex> lock(kept_mutex);
   auto it = kept_pools.find(device);
@@ -72,9 +82,8 @@ bool is_kept(int device, cudaMemPool_t pool) {
 // the H100 (driver 580.159.04; bench/RESULTS.md, session 73). Driver errors are dropped:
 // gdel/device_memory.hpp's calls report none.
 void trim_to(cudaMemPool_t p, std::size_t bytes) {
-  std::uint64_t reserved = 0;
-  if (cudaMemPoolGetAttribute(p, cudaMemPoolAttrReservedMemCurrent, &reserved) == cudaSuccess && reserved > bytes)
-    cudaMemPoolTrimTo(p, bytes);
+  PoolBytes b;
+  if (read_pool(p, &b) == cudaSuccess && b.reserved > bytes) cudaMemPoolTrimTo(p, bytes);
   cudaGetLastError();
 }
 
@@ -132,10 +141,9 @@ std::size_t Context<Cuda>::free_bytes() {
   std::size_t free_b = 0, total_b = 0;
   GDEL_CUDA_CHECK(cudaMemGetInfo(&free_b, &total_b));
   if (!pool_) return free_b;
-  std::uint64_t reserved = 0, used = 0;
-  GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(pool_, cudaMemPoolAttrReservedMemCurrent, &reserved));
-  GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(pool_, cudaMemPoolAttrUsedMemCurrent, &used));
-  return free_b + static_cast<std::size_t>(reserved > used ? reserved - used : 0);
+  PoolBytes b;
+  GDEL_CUDA_CHECK(read_pool(pool_, &b));
+  return free_b + (b.reserved > b.used ? b.reserved - b.used : 0);
 }
 
 PoolBytes kept_pool_bytes(int device) {
@@ -143,11 +151,7 @@ PoolBytes kept_pool_bytes(int device) {
   PoolBytes b;
   auto it = kept_pools.find(device);
   if (it == kept_pools.end()) return b;
-  std::uint64_t reserved = 0, used = 0;
-  GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(it->second, cudaMemPoolAttrReservedMemCurrent, &reserved));
-  GDEL_CUDA_CHECK(cudaMemPoolGetAttribute(it->second, cudaMemPoolAttrUsedMemCurrent, &used));
-  b.reserved = static_cast<std::size_t>(reserved);
-  b.used = static_cast<std::size_t>(used);
+  GDEL_CUDA_CHECK(read_pool(it->second, &b));
   return b;
 }
 
