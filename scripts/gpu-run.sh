@@ -2201,8 +2201,8 @@ for (_, r, s), n in zip(items, names):
     gpu_tests gpu_hostile
     GDEL_DEVICE_POOL=keep step s75a_kept_after 200 "$tbin/gpu_hostile" --gtest_filter='*Peers*:*SameArrays*:*TwentyMillion*:*OutOfDevice*:*MemoryEstimate*:*KeptDevice*:*PoolPrime*'
     GDEL_DEVICE_POOL=keep bench s75a_e8k 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 2
-    ab s75a 3 3 bench bench_keep bench_prime
     GDEL_PROFILE=1 bench s75a_prof6 60 --dist uniform,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
+    ab s75a 3 3 bench bench_keep bench_prime
     ;;
   s74c)  # session 73's third call, binaries with the trim fixed (no cudaMemPoolTrimTo at or above what the pool holds): the kept test alone and after the other hostile tests with GDEL_DEVICE_POOL=keep; uniform 10^8 twice with the kept pool (the precheck counting its memory); default against keep at 10^7 x2 (≈ 200 s)
     step s74c_kept 120 "$bin/gpu_hostile" --gtest_filter='*KeptDevice*'
