@@ -3,8 +3,8 @@
 // By default every call on a GPU (gdel::delaunay, delaunay_device, regular, verify) takes
 // the device memory it needs from a memory pool of its own and returns all of it when it
 // ends, so nothing stays allocated between calls. Mapping that memory afresh costs time
-// at every call (uniform 10^7 points on an H100: 5-19 ms of 0.44 s, bench/RESULTS.md,
-// session 72), as it does in any program that frees its GPU memory after each use.
+// at every call (uniform 10^7 points on an H100: 3-19 ms of 0.43-0.45 s, bench/RESULTS.md,
+// sessions 72 and 74), as it does in any program that frees its GPU memory after each use.
 //
 // keep_device_memory(bytes), bytes > 0: from then on the calls on a device share one pool
 // per device, which after each call keeps up to `bytes` of the memory the calls freed
