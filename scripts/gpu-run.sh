@@ -2197,13 +2197,17 @@ for (_, r, s), n in zip(items, names):
     ab s74b 2 4 bench bench_prime
     GDEL_POOL_PRIME=1 bench s74b_e8p 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
-  s75a)  # session 74's first call, binaries of HEAD (the trim fixed; the pool reads in one helper): gpu_hostile whole; the kept test after the others with GDEL_DEVICE_POOL=keep; uniform 10^8 twice with the kept pool (the precheck counting its memory); default, keep and prime at 10^7 x3 and 10^6 x3; step profiles of uniform and grid 10^6 (≈ 430 s)
+  s75a)  # session 74's call, binaries of HEAD c4f1603 (the trim fixed; the pool reads in one helper): the kept test alone, then after the other hostile tests with GDEL_DEVICE_POOL=keep; step profiles of uniform and grid 10^6; uniform 10^8 twice with the kept pool (the precheck counting its memory); default, keep and prime at 10^7 x3 and 10^6 x3; gpu_hostile whole (228 s on the H100)
     step s75a_kept 120 "$tbin/gpu_hostile" --gtest_filter='*KeptDevice*'
     GDEL_DEVICE_POOL=keep step s75a_kept_after 200 "$tbin/gpu_hostile" --gtest_filter='*Peers*:*SameArrays*:*TwentyMillion*:*OutOfDevice*:*MemoryEstimate*:*KeptDevice*:*PoolPrime*'
     GDEL_PROFILE=1 bench s75a_prof6 60 --dist uniform,grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     GDEL_DEVICE_POOL=keep bench s75a_e8k 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 2
     ab s75a 3 3 bench bench_keep bench_prime
     gpu_tests gpu_hostile
+    ;;
+  s76a)  # for session 75: gpu_gflip3d on session 74's binaries (build/s75x: the one GPU suite that did not run on them; its code unchanged since it last passed), then the grid's flip trace at 10^6 on the GPU (GDEL_FLIP_TRACE=1, its rounds' iterations against the CPU backend's) (≈ 230 s)
+    gpu_tests gpu_gflip3d
+    GDEL_FLIP_TRACE=1 bench s76a_gtrace 60 --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
   s74c)  # session 73's third call, binaries with the trim fixed (no cudaMemPoolTrimTo at or above what the pool holds): the kept test alone and after the other hostile tests with GDEL_DEVICE_POOL=keep; uniform 10^8 twice with the kept pool (the precheck counting its memory); default against keep at 10^7 x2 (≈ 200 s)
     step s74c_kept 120 "$bin/gpu_hostile" --gtest_filter='*KeptDevice*'
