@@ -2209,12 +2209,6 @@ for (_, r, s), n in zip(items, names):
     gpu_tests gpu_gflip3d
     GDEL_FLIP_TRACE=1 bench s76a_gtrace 60 --dist grid --n 1000000 --methods gdel3d-cuda-dev --repeat 1
     ;;
-  s74c)  # session 73's third call, binaries with the trim fixed (no cudaMemPoolTrimTo at or above what the pool holds): the kept test alone and after the other hostile tests with GDEL_DEVICE_POOL=keep; uniform 10^8 twice with the kept pool (the precheck counting its memory); default against keep at 10^7 x2 (≈ 200 s)
-    step s74c_kept 120 "$bin/gpu_hostile" --gtest_filter='*KeptDevice*'
-    GDEL_DEVICE_POOL=keep step s74c_kept_after 200 "$bin/gpu_hostile" --gtest_filter='*Peers*:*SameArrays*:*TwentyMillion*:*OutOfDevice*:*MemoryEstimate*:*KeptDevice*:*PoolPrime*'
-    GDEL_DEVICE_POOL=keep bench s74c_e8k 150 --dist uniform --n 100000000 --methods gdel3d-cuda-dev --repeat 2
-    ab s74c 2 0 bench bench_keep
-    ;;
   cmd)
     step cmd "${STEP_LIMIT:-540}" "$@"
     ;;
